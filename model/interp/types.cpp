@@ -1,0 +1,20 @@
+#include "interp/types.hpp"
+
+#include <sstream>
+
+namespace contour {
+
+std::string to_string(const Pulse& p) {
+  std::string s = p.sign > 0 ? "+" : "-";
+  s += p.axis == Axis::X ? 'X' : p.axis == Axis::Y ? 'Y' : 'Z';
+  return s;
+}
+
+std::string to_string(const State& s) {
+  std::ostringstream o;
+  o << "x=" << s.x << " y=" << s.y << " D=" << s.d << " q=Q" << int(s.quadrant) + 1
+    << " k=" << int(s.crossings_left) << " n=" << s.pulses << (s.done ? " done" : "");
+  return o.str();
+}
+
+}  // namespace contour
