@@ -22,13 +22,12 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& fl
       help_ = true;
       continue;
     }
-    if (a.rfind("--", 0) != 0 || looks_numeric(a)) {
-      if (a.size() > 1 && a[0] == '-' && !looks_numeric(a))
-        throw UsageError("unknown option '" + a + "'");
+    if (a.size() < 2 || a[0] != '-' || looks_numeric(a)) {
       positional_.push_back(a);
       continue;
     }
-    std::string name = a.substr(2);
+    // "--name", "--name=value", or a one-letter "-o" spelled as in `options`.
+    std::string name = a.rfind("--", 0) == 0 ? a.substr(2) : a.substr(1);
     std::optional<std::string> value;
     if (auto eq = name.find('='); eq != std::string::npos) {
       value = name.substr(eq + 1);
@@ -44,7 +43,7 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& fl
       }
       options_[name] = *value;
     } else {
-      throw UsageError("unknown option '--" + name + "'");
+      throw UsageError("unknown option '" + a + "'");
     }
   }
 }

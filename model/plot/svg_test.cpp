@@ -1,0 +1,39 @@
+#include "plot/svg.hpp"
+
+#include <gtest/gtest.h>
+
+namespace contour::plot {
+namespace {
+
+TEST(Svg, EscapesTextAndDrawsEverySeries) {
+  Plot p;
+  p.title = "a < b & c";
+  p.series.push_back({"path", "#f00", {{0, 0}, {1, 1}, {2, 0}}});
+  p.series.push_back({"ideal", "#00f", {{0, 0}, {2, 0}}, 1.0, true});
+  const std::string s = render(p);
+  EXPECT_NE(s.find("a &lt; b &amp; c"), std::string::npos);
+  EXPECT_EQ(s.find("a < b"), std::string::npos);
+  // One polyline per non-empty series, with one coordinate pair per point.
+  std::size_t n = 0;
+  for (std::size_t at = s.find("<polyline"); at != std::string::npos; at = s.find("<polyline", at + 1)) ++n;
+  EXPECT_EQ(n, 2u);
+  EXPECT_NE(s.find("stroke-dasharray"), std::string::npos);
+  EXPECT_EQ(s.rfind("</svg>\n"), s.size() - 7);
+}
+
+TEST(Svg, EqualAspectKeepsTheSameScaleOnBothAxes) {
+  Plot p;
+  p.equal_aspect = true;
+  p.width = 600;
+  p.height = 400;
+  // A unit square: with equal aspect its drawn width equals its height.
+  p.series.push_back({"sq", "#000", {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}}});
+  const std::string s = render(p);
+  const auto at = s.find("points=\"") + 8;
+  double x0, y0, x1, y1, x2, y2;
+  ASSERT_EQ(std::sscanf(s.c_str() + at, "%lf,%lf %lf,%lf %lf,%lf", &x0, &y0, &x1, &y1, &x2, &y2), 6);
+  EXPECT_NEAR(x1 - x0, y1 - y2, 1e-6);
+}
+
+}  // namespace
+}  // namespace contour::plot
