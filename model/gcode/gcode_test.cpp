@@ -1,0 +1,167 @@
+#include "gcode/gcode.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace contour::gcode {
+namespace {
+
+// Expects parse(text) to fail at (line, column) with a message containing `what`.
+void expect_error(const std::string& text, int line, int column, const std::string& what) {
+  try {
+    parse(text);
+    ADD_FAILURE() << "no error for:\n" << text;
+  } catch (const Error& e) {
+    EXPECT_EQ(e.line(), line) << e.what();
+    EXPECT_EQ(e.column(), column) << e.what();
+    EXPECT_NE(e.problem().find(what), std::string::npos) << "message: " << e.what() << "\nwanted: " << what;
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << "one line";
+    EXPECT_EQ(std::string(e.what()).rfind("line " + std::to_string(line) + ", column " + std::to_string(column), 0),
+              0u);
+  }
+}
+
+TEST(GcodeGrammar, PaperBExampleIsA3DArc) {
+  const auto b = parse("G00X50.Y0.Z0.\nG03X0.Y-47.246Z-16.366I-50J0.K0.F6000\nG00X0.Y0.Z0.\n");
+  ASSERT_EQ(b.size(), 3u);
+  EXPECT_EQ(b[0].motion, Motion::Rapid);
+  EXPECT_EQ(b[0].end, (Vec3{50, 0, 0}));
+  EXPECT_EQ(b[1].motion, Motion::ArcCCW);
+  EXPECT_TRUE(b[1].arc3d);
+  EXPECT_EQ(b[1].start, (Vec3{50, 0, 0}));
+  EXPECT_EQ(b[1].centre, (Vec3{0, 0, 0}));
+  EXPECT_DOUBLE_EQ(b[1].feed_mm_s, 100.0);
+  EXPECT_NEAR(b[1].r_start, 50.0, 1e-12);
+  EXPECT_NEAR(b[1].r_end, 50.0, 1e-3);
+  EXPECT_EQ(b[1].line, 2);
+  EXPECT_EQ(b[2].end, (Vec3{0, 0, 0}));
+}
+
+TEST(GcodeGrammar, CommentsLineNumbersBlanksCaseAndCrlf) {
+  const auto b = parse("%\r\nn10 g1 x 1.5 y-.5 f 60 (a comment) z+2 ; tail\r\n(only a comment)\n\n N20\tG0X0Y0Z0\n%\n");
+  ASSERT_EQ(b.size(), 2u);
+  EXPECT_EQ(b[0].end, (Vec3{1.5, -0.5, 2}));
+  EXPECT_DOUBLE_EQ(b[0].feed_mm_s, 1.0);
+  EXPECT_EQ(b[0].line, 2);
+  EXPECT_EQ(b[1].line, 5);
+  EXPECT_EQ(b[1].end, (Vec3{0, 0, 0}));
+}
+
+TEST(GcodeGrammar, ModalMotionIncrementalAndInches) {
+  const auto b = parse("G20 G91 G1 X1 F10\nY2\nG90 G21 X0 Y0\n");
+  ASSERT_EQ(b.size(), 3u);
+  EXPECT_EQ(b[0].end, (Vec3{25.4, 0, 0}));
+  EXPECT_NEAR(b[0].feed_mm_s, 10 * 25.4 / 60, 1e-12);
+  EXPECT_EQ(b[1].end, (Vec3{25.4, 50.8, 0}));
+  EXPECT_EQ(b[2].motion, Motion::Line);
+  EXPECT_EQ(b[2].end, (Vec3{0, 0, 0}));
+}
+
+TEST(GcodeGrammar, ZeroLengthLineMovesNothing) { EXPECT_TRUE(parse("G1 X0 F10\n").empty()); }
+
+TEST(GcodeGrammar, FullCircleAndHelixAndPlanes) {
+  auto b = parse("G0 X50\nG3 X50 Y0 I-50 J0 F6000\n");
+  ASSERT_EQ(b.size(), 2u);
+  EXPECT_TRUE(b[1].full_circle);
+  EXPECT_FALSE(b[1].arc3d);
+  b = parse("G1 X10 F100\nG2 X20 Z5 I5 J0\n");
+  EXPECT_FALSE(b[1].arc3d);
+  EXPECT_FALSE(b[1].full_circle);
+  EXPECT_EQ(b[1].centre, (Vec3{15, 0, 0}));
+  b = parse("G18 G3 X10 Z10 I5 K5 F100\n");  // in G18, K is the plane's first offset
+  EXPECT_EQ(b[0].plane, Plane::ZX);
+  EXPECT_EQ(b[0].centre, (Vec3{5, 0, 5}));
+  b = parse("G19 G2 Y10 Z0 J5 K0 F100\n");
+  EXPECT_EQ(b[0].plane, Plane::YZ);
+  EXPECT_EQ(b[0].centre, (Vec3{0, 5, 0}));
+}
+
+TEST(GcodeGrammar, RadiusFormCentreBothSigns) {
+  // From (0,0) to (10,0), R 5 ... the centre is the midpoint; with R 5.
+  // A quarter circle from (10,0) to (0,10), R 10: CCW short arc has its
+  // centre at (0,0); R -10 (long arc) at (10,10). CW short at (10,10).
+  auto c = [](const std::string& prog) { return parse(prog)[1].centre; };
+  const Vec3 ccw_short = c("G0 X10\nG3 X0 Y10 R10 F1\n");
+  EXPECT_NEAR(ccw_short.x, 0, 1e-12);
+  EXPECT_NEAR(ccw_short.y, 0, 1e-12);
+  const Vec3 ccw_long = c("G0 X10\nG3 X0 Y10 R-10 F1\n");
+  EXPECT_NEAR(ccw_long.x, 10, 1e-12);
+  EXPECT_NEAR(ccw_long.y, 10, 1e-12);
+  const Vec3 cw_short = c("G0 X10\nG2 X0 Y10 R10 F1\n");
+  EXPECT_NEAR(cw_short.x, 10, 1e-12);
+  EXPECT_NEAR(cw_short.y, 10, 1e-12);
+}
+
+TEST(GcodeRadiusRule, LinuxCncRuleBothWays) {
+  // Within tol (0.0283 mm): accepted.
+  EXPECT_EQ(check_radii(10.0, 10.02, false), "");
+  // Over tol but under 0.1 % of the radius (R 100, diff 0.05): accepted.
+  EXPECT_EQ(check_radii(100.0, 100.05, false), "");
+  // Over tol and over 0.1 % (R 10, diff 0.03): rejected.
+  EXPECT_NE(check_radii(10.0, 10.03, false), "");
+  // Under 0.1 % but over 100 x tol = 2.83 mm (R 10000, diff 3): rejected.
+  EXPECT_NE(check_radii(10000.0, 10003.0, false), "");
+  EXPECT_EQ(check_radii(10000.0, 10002.8, false), "");
+  // Inches: tol 0.00283 in.
+  EXPECT_EQ(check_radii(1.0, 1.002, true), "");
+  EXPECT_NE(check_radii(1.0, 1.003, true), "");
+  // The message gives both radii.
+  const std::string m = check_radii(10.0, 10.03, false);
+  EXPECT_NE(m.find("r1=10.0000"), std::string::npos) << m;
+  EXPECT_NE(m.find("r2=10.0300"), std::string::npos) << m;
+}
+
+TEST(GcodeRadiusRule, ReaderAppliesItToPlaneAnd3DArcs) {
+  EXPECT_NO_THROW(parse("G2 X10.02 Y0 I5 J0 F100\n"));  // r1 5, r2 5.02
+  expect_error("G2 X10.04 Y0 I5 J0 F100\n", 1, 1, "r1=5.0000 mm r2=5.0400 mm");
+  expect_error("G0 X50\nG3 X0 Y-47.246 Z-17 I-50 J0 K0 F6000\n", 2, 1, "radius to end of arc differs");
+  // In inches the tolerance is 0.00283 in: 0.002 passes, 0.004 fails.
+  EXPECT_NO_THROW(parse("G20 G2 X2.002 Y0 I1 J0 F10\n"));
+  expect_error("G20\nG2 X2.004 Y0 I1 J0 F10\n", 2, 1, "r2=1.0040 in");
+}
+
+TEST(GcodeErrors, EveryErrorNamesLineAndColumn) {
+  expect_error("G1 X1 F10\nG1 M3\n", 2, 4, "unsupported word 'M'");
+  expect_error("G1 X F10\n", 1, 4, "word 'X' has no number");
+  expect_error("G1 X1 X2 F10\n", 1, 7, "two X words");
+  expect_error("G1 G2 X1 F10\n", 1, 4, "both motion words");
+  expect_error("G17 G18\n", 1, 5, "both plane words");
+  expect_error("G4\n", 1, 1, "unsupported G code G4");
+  expect_error("G1.5 X1\n", 1, 1, "unsupported G code");
+  expect_error("X1\n", 1, 1, "no motion mode");
+  expect_error("G1 X1\n", 1, 1, "no feed rate");
+  expect_error("G1 X1 F0\n", 1, 7, "feed F must be > 0");
+  expect_error("G1 X1 F-5\n", 1, 7, "feed F must be > 0");
+  expect_error("G1 X1 (open\n", 1, 7, "comment '(' is not closed");
+  expect_error("G1 X1 (a (b) c)\n", 1, 10, "comments do not nest");
+  expect_error("G1 X1 F1 )\n", 1, 10, "')' without a matching '('");
+  expect_error("G1 X1 F1 N5\n", 1, 10, "line number N must be the first word");
+  expect_error("N1.5 G0 X1\n", 1, 1, "whole number");
+  expect_error("G1 X1 F1 #\n", 1, 10, "unexpected character '#'");
+  expect_error("%x\n", 1, 2, "text after '%'");
+  expect_error("G1 X1 I2 F10\n", 1, 7, "only allowed with G2/G3");
+  expect_error("G2 X1 F10\n", 1, 1, "needs the centre offsets");
+  expect_error("G2 X10 I5 R5 F10\n", 1, 11, "R or I/J/K offsets, not both");
+  expect_error("G2 X10 K5 F10\n", 1, 8, "K offset is off the G17 plane");
+  expect_error("G2 X10 Y0 F10 R0\n", 1, 15, "radius R is zero");
+  expect_error("G2 X10 Y0 F10 R4\n", 1, 15, "is too small");
+  expect_error("G2 X0 Y0 Z1 F10 R4\n", 1, 17, "cannot be a full circle");
+  expect_error("G2 X1 Y1 I0 J0 F10\n", 1, 1, "radius is zero");
+  expect_error("G0 X1\n   G1 Y1 X1e5 F1\n", 2, 12, "unsupported word 'E'");
+  expect_error("G1 X12345678901234567890123456789012 F1\n", 1, 5, "too long");
+}
+
+TEST(GcodeErrors, ThreeDArcPlaneChecks) {
+  // The arc from (10,0,0) to (0,0,10) about the origin lies in the XZ plane,
+  // which contains Z, the normal of G17: no sense of rotation.
+  expect_error("G0 X10\nG3 X0 Y0 Z10 I-10 J0 K0 F60\n", 2, 1, "contains the Z axis");
+  // The same arc is fine in G18 (normal Y).
+  EXPECT_NO_THROW(parse("G0 X10\nG18 G3 X0 Y0 Z10 I-10 J0 K0 F60\n"));
+  // A 3D half circle: start, centre and end in one line.
+  expect_error("G0 X10\nG3 X-10 Y0 Z0.0001 I-10 J0 K0.00005 F60\n", 2, 1, "in one line");
+}
+
+}  // namespace
+}  // namespace contour::gcode
