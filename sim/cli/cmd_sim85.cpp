@@ -1,0 +1,141 @@
+// `contour sim85 FILE`: runs an 8085/8080 program (Intel HEX or raw binary)
+// on a machine from the i8085 registry (the ISS by default) and prints its
+// port writes and T-states; `--cpm` runs a CP/M .COM-style diagnostic.
+// docs/i8085.md describes the conventions.
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <streambuf>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "args.hpp"
+#include "i8085/machine.hpp"
+#include "i8085/system.hpp"
+#include "registry.hpp"
+
+namespace contour::cli {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: contour sim85 FILE [--cpm] [--cpu 8080|8085] [--trace FILE] [--max-tstates N]\n"
+    "                     [--engine %s]\n"
+    "Runs an 8085 program: FILE is Intel HEX (starts with ':') or a raw binary.\n"
+    "  default  load (raw binaries at 0x0000), reset, run until HLT; prints each\n"
+    "           OUT as `OUT <port> <value> T=<T-states before the OUT>`\n"
+    "  --cpm    CP/M .COM diagnostic: loaded at 0x0100 (HEX must not go below),\n"
+    "           OUT 0 at 0x0000 ends the run, BDOS at 0x0005 serves C=2 and C=9;\n"
+    "           prints what the program prints\n"
+    "  last line: `T-states: N` (every instruction, the final HLT / OUT 0 included)\n"
+    "  --cpu          8085 (default) or 8080: T-states and flags of that CPU\n"
+    "  --trace FILE   one line per instruction (format: docs/i8085.md)\n"
+    "  --max-tstates  stop with an error (exit 1) after N T-states; default: no limit\n"
+    "  --engine       machine that runs it (default iss)\n"
+    "exit status: 0 finished, 1 run error (limit, undocumented opcode, BDOS), 2 bad input\n";
+
+std::vector<std::uint8_t> read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UsageError("cannot open '" + path + "'");
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Forwards to stdout and remembers the last character, so that `T-states:`
+// always starts a line of its own.
+class ConsoleBuf : public std::streambuf {
+ public:
+  bool at_line_start() const { return last_ == '\n'; }
+
+ protected:
+  int_type overflow(int_type ch) override {
+    if (ch == traits_type::eof()) return traits_type::not_eof(ch);
+    last_ = static_cast<char>(ch);
+    return std::fputc(ch, stdout) == EOF ? traits_type::eof() : ch;
+  }
+  int sync() override { return std::fflush(stdout) == 0 ? 0 : -1; }
+
+ private:
+  char last_ = '\n';
+};
+
+int cmd_sim85(const std::vector<std::string>& argv) {
+  const Args args(argv, {"cpm"}, {"cpu", "trace", "max-tstates", "engine"});
+  if (args.help()) {
+    std::printf(kUsage, i8085::machine_names().c_str());
+    return 0;
+  }
+  args.expect_positional({"FILE"});
+  const std::string path = args.positional()[0];
+
+  const std::string cpu = args.option_or("cpu", "8085");
+  i8085::Mode mode;
+  if (cpu == "8085") mode = i8085::Mode::i8085;
+  else if (cpu == "8080") mode = i8085::Mode::i8080;
+  else throw UsageError("--cpu: '" + cpu + "' is not 8080 or 8085");
+
+  const std::string engine = args.option_or("engine", "iss");
+  auto it = i8085::machines().find(engine);
+  if (it == i8085::machines().end())
+    throw UsageError("--engine: unknown machine '" + engine + "' (" + i8085::machine_names() + ")");
+
+  i8085::RunOptions opt;
+  if (auto m = args.option("max-tstates")) {
+    const std::int64_t n = parse_int(*m, "--max-tstates");
+    if (n <= 0) throw UsageError("--max-tstates: '" + *m + "' must be positive");
+    opt.max_tstates = static_cast<std::uint64_t>(n);
+  }
+  std::ofstream trace;
+  if (auto t = args.option("trace")) {
+    trace.open(*t);
+    if (!trace) throw UsageError("--trace: cannot write '" + *t + "'");
+    opt.trace = &trace;
+  }
+
+  const bool cpm = args.flag("cpm");
+  i8085::RamBus bus;
+  const std::vector<std::uint8_t> file = read_file(path);
+  std::uint16_t lowest;
+  try {
+    lowest = i8085::load_program(bus, file, path, cpm ? 0x0100 : 0x0000);
+  } catch (const std::exception& e) {
+    throw UsageError(e.what());
+  }
+  if (cpm && lowest < 0x0100) {
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "%04X", lowest);
+    throw UsageError(path + ": --cpm programs start at 0100, this one loads at " + buf);
+  }
+
+  std::unique_ptr<i8085::Machine> machine = it->second.make(bus, mode);
+  i8085::RunResult res;
+  ConsoleBuf console_buf;
+  std::ostream console(&console_buf);
+  try {
+    if (cpm) {
+      res = i8085::run_cpm(*machine, bus, console, opt);
+    } else {
+      machine->reset();
+      res = i8085::run_bare(*machine, bus, opt);
+    }
+  } catch (const i8085::RunError& e) {
+    console.flush();
+    if (!console_buf.at_line_start()) std::fputc('\n', stdout);
+    std::fflush(stdout);
+    std::fprintf(stderr, "contour sim85: %s: %s\n", path.c_str(), e.what());
+    return 1;
+  }
+  if (cpm) {
+    console.flush();
+    if (!console_buf.at_line_start()) std::fputc('\n', stdout);
+  } else {
+    for (const auto& w : bus.outs)
+      std::printf("OUT %02X %02X T=%llu\n", w.port, w.value, static_cast<unsigned long long>(w.t));
+  }
+  std::printf("T-states: %llu\n", static_cast<unsigned long long>(res.tstates));
+  return 0;
+}
+
+const CommandRegistrar kSim85{{"sim85", "run an 8085/8080 program (HEX or binary, --cpm) on the ISS", cmd_sim85}};
+
+}  // namespace
+}  // namespace contour::cli
