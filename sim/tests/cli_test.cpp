@@ -1,0 +1,109 @@
+// The `contour` CLI as a user sees it: paper examples, formats, errors.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "run.hpp"
+
+namespace contour::test {
+namespace {
+
+TEST(Cli, PaperFig2LineSixFive) {
+  const Outcome o = contour("line 6 5 --format steps");
+  EXPECT_EQ(o.status, 0);
+  EXPECT_EQ(o.out, "+X +Y +X +Y +X +Y +X +Y +X +Y +X\n");
+  EXPECT_EQ(o.err, "");
+}
+
+TEST(Cli, PaperFig5ArcCcw) {
+  const Outcome o = contour("arc 6 0 0 6 --ccw --format steps");
+  EXPECT_EQ(o.status, 0);
+  EXPECT_EQ(o.out, "-X +Y +Y +Y +Y -X +Y -X +Y -X -X -X\n");
+}
+
+TEST(Cli, SummaryNamesPulsesEndAndDeviation) {
+  const Outcome o = contour("arc 6 0 0 6 --ccw");
+  EXPECT_EQ(o.status, 0);
+  EXPECT_NE(o.out.find("pulses:        12 (X 6, Y 6)"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("end point:     (0, 6)"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("max deviation: 1.0000"), std::string::npos) << o.out;
+}
+
+TEST(Cli, JsonCarriesPulsesAndFinalState) {
+  const Outcome o = contour("line -3 2 --format json");
+  EXPECT_EQ(o.status, 0);
+  EXPECT_NE(o.out.find("\"count\": 5"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("\"pulses\": [\"-X\", \"+Y\", \"-X\", \"+Y\", \"-X\"]"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("\"x\": -3, \"y\": 2, \"d\": 0"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("\"done\": true"), std::string::npos) << o.out;
+}
+
+TEST(Cli, SvgDrawsThePathAndTheIdealContour) {
+  const std::string path = ::testing::TempDir() + "fig5.svg";
+  const Outcome o = contour("arc 6 0 0 6 --ccw --format svg -o " + path);
+  ASSERT_EQ(o.status, 0) << o.err;
+  std::ifstream f(path);
+  std::stringstream s;
+  s << f.rdbuf();
+  EXPECT_EQ(s.str().rfind("<svg", 0), 0u);
+  EXPECT_NE(s.str().find("pulse path"), std::string::npos);
+  EXPECT_NE(s.str().find("ideal contour"), std::string::npos);
+  // 13 path points: the start and one per pulse.
+  const auto at = s.str().find("stroke=\"#d62728\"");
+  ASSERT_NE(at, std::string::npos);
+  const auto pts = s.str().find("points=\"", at);
+  const auto end = s.str().find('"', pts + 8);
+  int pairs = 0;
+  for (auto i = pts; i < end; ++i) pairs += s.str()[i] == ',';
+  EXPECT_EQ(pairs, 13);
+}
+
+struct BadInput {
+  const char* args;
+  const char* message;
+};
+
+class CliErrors : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(CliErrors, OneLineOnStderrAndExitTwo) {
+  const Outcome o = contour(GetParam().args);
+  EXPECT_EQ(o.status, 2) << GetParam().args;
+  EXPECT_EQ(o.out, "");
+  EXPECT_NE(o.err.find(GetParam().message), std::string::npos) << o.err;
+  EXPECT_EQ(o.err.find('\n'), o.err.size() - 1) << "exactly one line: " << o.err;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cli, CliErrors,
+    ::testing::Values(BadInput{"line 16777216 0", "XE = 16777216 is out of range"},
+                      BadInput{"line 1 -16777216", "YE = -16777216 is out of range"},
+                      BadInput{"line six 5", "XE: 'six' is not an integer"},
+                      BadInput{"line 1.5 5", "XE: '1.5' is not an integer"},
+                      BadInput{"line 6", "missing argument YE"},
+                      BadInput{"line 6 5 7", "unexpected argument '7'"},
+                      BadInput{"line 6 5 --format xml", "unknown format 'xml'"},
+                      BadInput{"line 6 5 --engine nope", "unknown engine 'nope'"},
+                      BadInput{"line 6 5 --frobnicate", "unknown option '--frobnicate'"},
+                      BadInput{"arc 0 0 0 0 --cw", "zero radius"},
+                      BadInput{"arc 6 0 0 6", "exactly one of --cw and --ccw"},
+                      BadInput{"arc 6 0 0 6 --cw --ccw", "exactly one of --cw and --ccw"},
+                      BadInput{"arc 10 0 5 5 --ccw", "end point (5, 5) is not on the circle"},
+                      BadInput{"arc 1 0 0 1 --ccw", "radius too small"},
+                      BadInput{"arc 16777215 1 0 1 --ccw", "radius too large"},
+                      BadInput{"arc 6 0 0 6 --ccw --format svg", "--format svg needs -o FILE"},
+                      BadInput{"nosuchcommand", "unknown command 'nosuchcommand'"}));
+
+TEST(Cli, HelpListsCommandsAndEngines) {
+  const Outcome top = contour("--help");
+  EXPECT_EQ(top.status, 0);
+  EXPECT_NE(top.out.find("line"), std::string::npos);
+  EXPECT_NE(top.out.find("arc"), std::string::npos);
+  const Outcome arc = contour("arc --help");
+  EXPECT_EQ(arc.status, 0);
+  EXPECT_NE(arc.out.find("--engine E"), std::string::npos);
+  EXPECT_NE(arc.out.find("model"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace contour::test
