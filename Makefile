@@ -33,8 +33,17 @@ configure: deps
 build: configure
 	@$(CMAKE) --build $(BUILD) -j$(JOBS)
 
+# The paper reproduction: Fig. 2 and Fig. 5 on every engine, then the
+# co-simulation report once sim/cosim is built.
 run: build
-	@sim/run.sh $(BUILD)
+	@echo "== paper A, Fig. 2: contour line 6 5"
+	@$(BUILD)/contour line 6 5 --format steps
+	@echo "== paper A, Fig. 5: contour arc 6 0 0 6 --ccw"
+	@$(BUILD)/contour arc 6 0 0 6 --ccw --format steps
+	@mkdir -p $(BUILD)/report
+	@$(BUILD)/contour arc 6 0 0 6 --ccw --format svg -o $(BUILD)/report/fig5.svg
+	@$(BUILD)/contour line 6 5 --format svg -o $(BUILD)/report/fig2.svg
+	@echo "drawings: $(BUILD)/report/fig2.svg $(BUILD)/report/fig5.svg"
 
 test: build
 	@cd $(BUILD) && ctest -j$(JOBS) --output-on-failure $(CTEST_ARGS)
