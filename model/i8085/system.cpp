@@ -18,9 +18,9 @@ std::string hex2(unsigned v) {
   return buf;
 }
 
-// Steps once; traces; stamps new port writes; stops on undocumented opcodes
-// and on the T-state limit.
-void step_checked(Machine& m, RamBus& bus, const RunOptions& opt, RunResult& res) {
+}  // namespace
+
+void run_step(Machine& m, RamBus& bus, const RunOptions& opt, RunResult& res) {
   const std::size_t outs_before = bus.outs.size();
   m.step();
   ++res.steps;
@@ -34,8 +34,6 @@ void step_checked(Machine& m, RamBus& bus, const RunOptions& opt, RunResult& res
     throw RunError("stopped at the T-state limit " + std::to_string(opt.max_tstates) + " (PC=" +
                    hex4(m.regs().pc) + "), the program did not finish");
 }
-
-}  // namespace
 
 std::uint16_t load_program(RamBus& bus, const std::vector<std::uint8_t>& file, const std::string& name,
                            std::uint16_t raw_base) {
@@ -57,7 +55,7 @@ std::uint16_t load_program(RamBus& bus, const std::vector<std::uint8_t>& file, c
 RunResult run_bare(Machine& m, RamBus& bus, const RunOptions& opt) {
   RunResult res;
   const std::uint64_t t0 = m.tstates();
-  while (!m.halted()) step_checked(m, bus, opt, res);
+  while (!m.halted()) run_step(m, bus, opt, res);
   res.tstates = m.tstates() - t0;
   return res;
 }
@@ -78,7 +76,7 @@ RunResult run_cpm(Machine& m, RamBus& bus, std::ostream& console, const RunOptio
   RunResult res;
   const std::uint64_t t0 = m.tstates();
   for (;;) {
-    step_checked(m, bus, opt, res);
+    run_step(m, bus, opt, res);
     const Step& s = m.last();
     if (s.kind != StepKind::instruction || s.bytes[0] != 0xD3) continue;
     if (s.bytes[1] == 0x00) break;

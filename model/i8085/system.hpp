@@ -54,6 +54,12 @@ struct RunResult {
   std::uint64_t steps = 0;
 };
 
+// One step of a run, for loops that drive interrupts themselves: steps the
+// machine, writes the trace line, stamps new port writes with the step's
+// starting T-state, counts the step in `res`; throws RunError on an
+// undocumented 8085 opcode or when opt.max_tstates is reached.
+void run_step(Machine& m, RamBus& bus, const RunOptions& opt, RunResult& res);
+
 // Loads a program: Intel HEX (by content: first non-blank character ':')
 // or a raw binary placed at `raw_base`. Returns the lowest address loaded.
 // Throws HexError / RunError.
