@@ -1,0 +1,363 @@
+#include "planner/planner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace contour::planner {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Planning margins (docs/paper-b.md): velocities are planned 1e-6 under the
+// limits, arc accelerations 1 % under (the radial chord offset uses the
+// rest), chords for eps * (1 - 1e-3).
+constexpr double kVelMargin = 1e-6;
+constexpr double kArcAccelMargin = 0.01;
+constexpr double kTolMargin = 1e-3;
+constexpr double kNormalShare = 0.8660254037844386;  // sqrt(3)/2: a_t >= A/2
+constexpr double kOffsetAccelShare = 0.005;          // radial offset jump at a junction
+
+double seg_point_distance(Vec3 p, Vec3 a, Vec3 b) {
+  const Vec3 ab = b - a;
+  const double l2 = dot(ab, ab);
+  double t = l2 == 0 ? 0 : dot(p - a, ab) / l2;
+  t = std::clamp(t, 0.0, 1.0);
+  return norm(p - (a + t * ab));
+}
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument(what);
+}
+
+}  // namespace
+
+double chord_length(ChordMethod m, double R, double eps) {
+  switch (m) {
+    case ChordMethod::Inside: return 2 * std::sqrt(std::max(0.0, 2 * R * eps - eps * eps));
+    case ChordMethod::Outside: return 2 * std::sqrt(2 * R * eps + eps * eps);
+    case ChordMethod::InsideOutside: return 4 * std::sqrt(R * eps);
+  }
+  return 0;
+}
+
+double chord_angle(ChordMethod m, double R, double eps) {
+  switch (m) {
+    case ChordMethod::Inside: return 2 * std::acos(std::max(-1.0, (R - eps) / R));
+    case ChordMethod::Outside: return 2 * std::acos(R / (R + eps));
+    case ChordMethod::InsideOutside: return 2 * std::acos(std::max(-1.0, (R - eps) / (R + eps)));
+  }
+  return 0;
+}
+
+double vertex_offset(ChordMethod m, double R, double L) {
+  if (m == ChordMethod::Inside || R <= 0 || L <= 0) return 0;
+  const double h2 = L * L / 4;  // (half chord)^2
+  // (b): ends at R + e, middle on the circle: (R + e)^2 - h^2 = R^2.
+  if (m == ChordMethod::Outside) return h2 / (std::sqrt(R * R + h2) + R);
+  // (c): ends at R + e, middle at R - e: (R + e)^2 - h^2 = (R - e)^2.
+  return h2 / (4 * R);
+}
+
+const char* chord_name(ChordMethod m) {
+  return m == ChordMethod::Inside ? "a" : (m == ChordMethod::Outside ? "b" : "c");
+}
+
+const char* cap_name(Cap c) {
+  switch (c) {
+    case Cap::Feed: return "feed";
+    case Cap::AxisVelocity: return "axis velocity";
+    case Cap::Chord: return "chord tolerance";
+    case Cap::Centripetal: return "centripetal acceleration";
+    case Cap::Rapid: return "rapid";
+  }
+  return "";
+}
+
+void Config::validate() const {
+  auto pos = [](double v) { return std::isfinite(v) && v > 0; };
+  require(pos(cycle_s), "cycle must be > 0 s (got " + std::to_string(cycle_s) + ")");
+  require(pos(tol_mm), "tolerance must be > 0 mm (got " + std::to_string(tol_mm) + ")");
+  const char* names = "XYZ";
+  for (int i = 0; i < 3; ++i) {
+    require(pos(machine.vmax[i]), std::string("velocity limit of ") + names[i] + " must be > 0");
+    require(pos(machine.amax[i]), std::string("acceleration limit of ") + names[i] + " must be > 0");
+  }
+  require(pos(machine.rapid), "rapid speed must be > 0");
+}
+
+double PlannedSegment::s_at(double t) const {
+  if (t <= 0) return 0;
+  if (t < t_acc) return std::min(geom.length, v_start * t + 0.5 * a_t * t * t);
+  if (t < t_acc + t_cruise) return std::min(geom.length, s_acc + v_cruise * (t - t_acc));
+  const double tau = std::min(t - t_acc - t_cruise, t_dec);
+  return std::min(geom.length, s_acc + s_cruise + v_cruise * tau - 0.5 * a_t * tau * tau);
+}
+
+double PlannedSegment::v_at(double t) const {
+  if (t <= 0) return v_start;
+  if (t < t_acc) return v_start + a_t * t;
+  if (t < t_acc + t_cruise) return v_cruise;
+  const double tau = std::min(t - t_acc - t_cruise, t_dec);
+  return std::max(0.0, v_cruise - a_t * tau);
+}
+
+Plan plan(const std::vector<gcode::Block>& blocks, const Config& config) {
+  config.validate();
+  Plan p;
+  p.config = config;
+  const Machine& mc = config.machine;
+  const double T = config.cycle_s;
+  const double eps = config.tol_mm * (1 - kTolMargin);
+  const double amin = std::min({mc.amax.x, mc.amax.y, mc.amax.z});
+
+  for (const auto& b : blocks) {
+    PlannedSegment ps;
+    ps.geom = make_segment(b);
+    const Segment& g = ps.geom;
+    const double F = g.rapid ? mc.rapid : b.feed_mm_s;
+    ps.v_cap = F;
+    ps.cap = g.rapid ? Cap::Rapid : Cap::Feed;
+    auto cap = [&](double v, Cap why) {
+      if (v < ps.v_cap) ps.v_cap = v, ps.cap = why;
+    };
+    if (g.kind == Segment::Kind::Line) {
+      double a = kInf;
+      for (int i = 0; i < 3; ++i) {
+        const double d = std::fabs(g.dir[i]);
+        if (d < 1e-15) continue;
+        cap(mc.vmax[i] * (1 - kVelMargin) / d, Cap::AxisVelocity);
+        a = std::min(a, mc.amax[i] / d);
+      }
+      ps.a_t = a;
+      for (int i = 0; i < 3; ++i) ps.accel_use[i] = a * std::fabs(g.dir[i]);
+    } else {
+      ps.rho = g.curvature_radius();
+      Vec3 pr;  // projection of each axis on the arc plane
+      for (int i = 0; i < 3; ++i) pr[i] = std::hypot(g.u_hat[i], g.v_hat[i]);
+      cap(chord_length(config.chord, ps.rho, eps) / T, Cap::Chord);
+      if (!g.helix()) {
+        double a_plane = kInf;
+        for (int i = 0; i < 3; ++i) {
+          if (pr[i] < 1e-15) continue;
+          a_plane = std::min(a_plane, mc.amax[i] / pr[i]);
+          cap(mc.vmax[i] * (1 - kVelMargin) / pr[i], Cap::AxisVelocity);
+        }
+        a_plane *= 1 - kArcAccelMargin;
+        cap(std::sqrt(kNormalShare * a_plane * ps.rho), Cap::Centripetal);
+        const double an = ps.v_cap * ps.v_cap / ps.rho;
+        ps.a_t = std::sqrt(std::max(0.0, a_plane * a_plane - an * an));
+        for (int i = 0; i < 3; ++i) ps.accel_use[i] = a_plane * pr[i];
+      } else {
+        const double rise = norm(g.rise);
+        const double beta = std::atan2(rise, g.radius * g.sweep);
+        const Vec3 rh = (1.0 / rise) * g.rise;
+        Vec3 c;  // bound on |tangent_i|
+        double a_plane = kInf;
+        for (int i = 0; i < 3; ++i) {
+          c[i] = std::cos(beta) * pr[i] + std::sin(beta) * std::fabs(rh[i]);
+          if (c[i] > 1e-15) cap(mc.vmax[i] * (1 - kVelMargin) / c[i], Cap::AxisVelocity);
+          if (pr[i] > 1e-15) a_plane = std::min(a_plane, mc.amax[i] * (1 - kArcAccelMargin) / pr[i]);
+        }
+        cap(std::sqrt(kNormalShare * a_plane * ps.rho), Cap::Centripetal);
+        const double an = ps.v_cap * ps.v_cap / ps.rho;
+        double at = kInf;
+        for (int i = 0; i < 3; ++i)
+          if (c[i] > 1e-15) at = std::min(at, (mc.amax[i] * (1 - kArcAccelMargin) - an * pr[i]) / c[i]);
+        ps.a_t = std::max(0.0, at);
+        for (int i = 0; i < 3; ++i) ps.accel_use[i] = ps.a_t * c[i] + an * pr[i];
+      }
+    }
+    require(ps.a_t > 0 && ps.v_cap > 0, "line " + std::to_string(b.line) + ": no feasible speed");
+    p.segs.push_back(ps);
+  }
+
+  // Junction limits. J[k] is the speed at the start of segment k; J[n] = 0.
+  const std::size_t n = p.segs.size();
+  std::vector<double> J(n + 1, 0.0);
+  for (std::size_t k = 1; k < n; ++k) {
+    const PlannedSegment& s1 = p.segs[k - 1];
+    const PlannedSegment& s2 = p.segs[k];
+    double lim = std::min(s1.v_cap, s2.v_cap);
+    const double amx = std::max(s1.a_t, s2.a_t);
+    const Vec3 t1 = s1.geom.tangent(s1.geom.length), t2 = s2.geom.tangent(0);
+    const double delta = std::acos(std::clamp(dot(t1, t2), -1.0, 1.0));
+    if (delta > 1e-9) {
+      lim = std::min(lim, std::max(0.0, 2 * eps / std::sin(delta / 2) / T - amx * T));
+      for (int i = 0; i < 3; ++i) {
+        const double dt = std::fabs(t2[i] - t1[i]);
+        if (dt < 1e-12) continue;
+        const double rem = mc.amax[i] - std::max(s1.accel_use[i], s2.accel_use[i]);
+        lim = std::min(lim, std::max(0.0, rem) * T / dt);
+      }
+    }
+    for (const PlannedSegment* s : {&s1, &s2}) {
+      if (s->geom.kind != Segment::Kind::Arc) continue;
+      lim = std::min(lim, std::max(0.0, chord_length(ChordMethod::Inside, s->rho, eps) / T - amx * T));
+      // vertex_offset ~ k L^2 / rho: keep its jump under kOffsetAccelShare of A.
+      const double x = kOffsetAccelShare * amin * T * T;
+      const double k = config.chord == ChordMethod::InsideOutside ? 1.0 / 16 : 1.0 / 8;
+      if (config.chord != ChordMethod::Inside) lim = std::min(lim, std::max(0.0, std::sqrt(x * s->rho / k) / T - amx * T));
+    }
+    J[k] = lim;
+  }
+  p.junction_limit = J;
+  // Backward then forward pass.
+  for (std::size_t k = n; k-- > 0;) {
+    const PlannedSegment& s = p.segs[k];
+    J[k] = std::min({J[k], s.v_cap, std::sqrt(J[k + 1] * J[k + 1] + 2 * s.a_t * s.geom.length)});
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const PlannedSegment& s = p.segs[k];
+    J[k + 1] = std::min(J[k + 1], std::sqrt(J[k] * J[k] + 2 * s.a_t * s.geom.length));
+  }
+  // Trapezoids.
+  double t = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    PlannedSegment& s = p.segs[k];
+    const double L = s.geom.length, a = s.a_t;
+    s.v_start = J[k];
+    s.v_end = J[k + 1];
+    const double v_peak = std::sqrt((2 * a * L + s.v_start * s.v_start + s.v_end * s.v_end) / 2);
+    s.v_cruise = std::max({std::min(s.v_cap, v_peak), s.v_start, s.v_end});
+    s.s_acc = (s.v_cruise * s.v_cruise - s.v_start * s.v_start) / (2 * a);
+    const double s_dec = (s.v_cruise * s.v_cruise - s.v_end * s.v_end) / (2 * a);
+    s.s_cruise = std::max(0.0, L - s.s_acc - s_dec);
+    s.t_acc = (s.v_cruise - s.v_start) / a;
+    s.t_dec = (s.v_cruise - s.v_end) / a;
+    s.t_cruise = s.v_cruise > 0 ? s.s_cruise / s.v_cruise : 0;
+    s.duration = s.t_acc + s.t_cruise + s.t_dec;
+    // After an exact stop the next block starts on a cycle boundary (the
+    // axes wait at rest for the rest of the cycle), so that a sample lands
+    // on the corner and no chord cuts it.
+    if (k > 0 && s.v_start == 0) t = std::ceil(t / T - 1e-9) * T;
+    s.t_begin = t;
+    t += s.duration;
+  }
+  p.total_time = t;
+  return p;
+}
+
+Interpolator::Interpolator(const Plan& plan) : plan_(plan) {
+  const double T = plan.config.cycle_s;
+  cycles_ = plan.segs.empty() ? 0 : static_cast<std::size_t>(std::ceil(plan.total_time / T - 1e-9));
+  if (!plan.segs.empty() && cycles_ == 0) cycles_ = 1;
+}
+
+Sample Interpolator::at(std::size_t n) {
+  Sample out;
+  const double T = plan_.config.cycle_s;
+  out.t = static_cast<double>(n) * T;
+  if (n >= cycles_) {
+    out.seg = static_cast<int>(plan_.segs.size()) - 1;
+    const auto& last = plan_.segs.back();
+    out.s = last.geom.length;
+    out.p = last.geom.end;
+    return out;
+  }
+  while (seg_ + 1 < plan_.segs.size() && out.t >= plan_.segs[seg_ + 1].t_begin) ++seg_;
+  const PlannedSegment& s = plan_.segs[seg_];
+  const double tl = out.t - s.t_begin;
+  out.seg = static_cast<int>(seg_);
+  out.s = s.s_at(tl);
+  out.v = s.v_at(tl);
+  const double e = s.geom.kind == Segment::Kind::Arc ? vertex_offset(plan_.config.chord, s.rho, out.v * T) : 0;
+  out.p = s.geom.point(out.s, e);
+  return out;
+}
+
+bool Interpolator::next(Sample& out) {
+  if (plan_.segs.empty() || n_ > cycles_) return false;
+  out = at(n_++);
+  return true;
+}
+
+std::vector<Sample> interpolate(const Plan& plan) {
+  std::vector<Sample> out;
+  Interpolator it(plan);
+  out.reserve(it.cycles() + 1);
+  Sample s;
+  while (it.next(s)) out.push_back(s);
+  return out;
+}
+
+double chord_error(const Plan& plan, const Sample& a, const Sample& b) {
+  if (a.seg == b.seg) {
+    const Segment& g = plan.segs[a.seg].geom;
+    if (g.kind == Segment::Kind::Line) return std::max(g.distance(a.p), g.distance(b.p));
+    if (!g.helix()) {
+      const Vec3 nn = cross(g.u_hat, g.v_hat);
+      auto uv = [&](Vec3 p) {
+        const Vec3 w = p - g.origin;
+        return std::array<double, 3>{dot(w, g.u_hat) - g.qc.u, dot(w, g.v_hat) - g.qc.v, dot(w, nn)};
+      };
+      const auto qa = uv(a.p), qb = uv(b.p);
+      const double ra = std::hypot(qa[0], qa[1]), rb = std::hypot(qb[0], qb[1]);
+      // Nearest approach of the chord to the centre, in the plane.
+      const double du = qb[0] - qa[0], dv = qb[1] - qa[1];
+      const double l2 = du * du + dv * dv;
+      double t = l2 == 0 ? 0 : -(qa[0] * du + qa[1] * dv) / l2;
+      t = std::clamp(t, 0.0, 1.0);
+      const double rmin = std::hypot(qa[0] + t * du, qa[1] + t * dv);
+      const double R = g.radius;
+      const double err = std::max({std::fabs(ra - R), std::fabs(rb - R), R - rmin});
+      return std::max({err, std::fabs(qa[2]), std::fabs(qb[2])});
+    }
+  }
+  // Sampled, both ways, over every segment the chord spans.
+  constexpr int kN = 16;
+  double err = 0;
+  for (int j = 0; j <= kN; ++j) {
+    const Vec3 p = a.p + (static_cast<double>(j) / kN) * (b.p - a.p);
+    double d = kInf;
+    for (int k = a.seg; k <= b.seg; ++k) d = std::min(d, plan.segs[k].geom.distance(p));
+    err = std::max(err, d);
+  }
+  for (int k = a.seg; k <= b.seg; ++k) {
+    const Segment& g = plan.segs[k].geom;
+    const double s0 = k == a.seg ? a.s : 0, s1 = k == b.seg ? b.s : g.length;
+    for (int j = 0; j <= kN; ++j) {
+      const Vec3 q = g.point(s0 + (s1 - s0) * j / kN);
+      err = std::max(err, seg_point_distance(q, a.p, b.p));
+    }
+  }
+  return err;
+}
+
+Report analyse(const Plan& plan, const std::vector<Sample>& samples) {
+  Report r;
+  const Config& c = plan.config;
+  const double T = c.cycle_s;
+  r.total_time_s = plan.total_time;
+  r.cycles = samples.empty() ? 0 : samples.size() - 1;
+  for (int i = 0; i < 3; ++i) {
+    r.axes[i].vmax = c.machine.vmax[i];
+    r.axes[i].amax = c.machine.amax[i];
+  }
+  Vec3 v_prev;  // at rest before the first chord
+  for (std::size_t n = 1; n <= samples.size(); ++n) {
+    Vec3 v;  // at rest after the last chord
+    if (n < samples.size()) {
+      const Vec3 d = samples[n].p - samples[n - 1].p;
+      v = (1.0 / T) * d;
+      r.peak_feed = std::max(r.peak_feed, norm(d) / T);
+      r.max_chord_error = std::max(r.max_chord_error, chord_error(plan, samples[n - 1], samples[n]));
+    }
+    for (int i = 0; i < 3; ++i) {
+      r.axes[i].peak_v = std::max(r.axes[i].peak_v, std::fabs(v[i]));
+      r.axes[i].peak_a = std::max(r.axes[i].peak_a, std::fabs(v[i] - v_prev[i]) / T);
+    }
+    v_prev = v;
+  }
+  constexpr double kSlack = 1 + 1e-9;
+  r.tol_ok = r.max_chord_error <= c.tol_mm * kSlack;
+  for (auto& ax : r.axes) {
+    ax.v_ok = ax.peak_v <= ax.vmax * kSlack;
+    ax.a_ok = ax.peak_a <= ax.amax * kSlack;
+  }
+  return r;
+}
+
+}  // namespace contour::planner

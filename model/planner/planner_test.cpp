@@ -1,0 +1,369 @@
+// Paper B's planner: UV frames, the 2.46 s reproduction, chord tolerance,
+// per-axis limits, junction speeds, chord caps and the two-stage pulses.
+#include "planner/planner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "planner/two_stage.hpp"
+
+namespace contour::planner {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+const char* kPaper3D = "G00X50.Y0.Z0.\nG03X0.Y-47.246Z-16.366I-50J0.K0.F6000\nG00X0.Y0.Z0.\n";
+const char* kPaperArcOnly = "G03X0.Y-47.246Z-16.366I-50J0.K0.F6000\n";
+const char* kPaperCircle = "G03X50.Y0.I-50.J0.F6000\n";
+
+gcode::Options at(double x, double y, double z) {
+  gcode::Options o;
+  o.start = {x, y, z};
+  return o;
+}
+
+Plan plan_text(const char* text, const Config& c = {}, gcode::Options o = {}) {
+  return plan(gcode::parse(text, o), c);
+}
+
+// Distance from p to the circle (centre c, unit normal n, radius R).
+double circle_distance(Vec3 p, Vec3 c, Vec3 n, double R) {
+  const Vec3 w = p - c;
+  const double h = dot(w, n);
+  const double r = norm(w - h * n);
+  return std::hypot(r - R, h);
+}
+
+// Largest distance of the chords a->b (sampled densely, ends included) from a circle.
+double max_chord_distance(const std::vector<Sample>& s, Vec3 c, Vec3 n, double R) {
+  double worst = 0;
+  for (std::size_t k = 1; k < s.size(); ++k)
+    for (int j = 0; j <= 40; ++j) {
+      const Vec3 p = s[k - 1].p + (j / 40.0) * (s[k].p - s[k - 1].p);
+      worst = std::max(worst, circle_distance(p, c, n, R));
+    }
+  return worst;
+}
+
+// Peak |second difference| / T^2 per axis, at rest before and after.
+Vec3 peak_accel(const std::vector<Sample>& s, double T) {
+  Vec3 peak, vprev;
+  for (std::size_t k = 1; k <= s.size(); ++k) {
+    Vec3 v;
+    if (k < s.size()) v = (1 / T) * (s[k].p - s[k - 1].p);
+    for (int i = 0; i < 3; ++i) peak[i] = std::max(peak[i], std::fabs(v[i] - vprev[i]) / T);
+    vprev = v;
+  }
+  return peak;
+}
+
+TEST(ChordPlacement, PaperBFigure1Geometry) {
+  const double R = 50, e = 2e-5;
+  // (a) ends on the circle, middle at R - e.
+  double th = chord_angle(ChordMethod::Inside, R, e);
+  EXPECT_NEAR(R * std::cos(th / 2), R - e, 1e-12);
+  EXPECT_NEAR(chord_length(ChordMethod::Inside, R, e), 2 * R * std::sin(th / 2), 1e-10);
+  // (b) ends at R + e, middle tangent (at R).
+  th = chord_angle(ChordMethod::Outside, R, e);
+  EXPECT_NEAR((R + e) * std::cos(th / 2), R, 1e-12);
+  EXPECT_NEAR(chord_length(ChordMethod::Outside, R, e), 2 * (R + e) * std::sin(th / 2), 1e-10);
+  // (c) ends at R + e, middle at R - e: the longest, 4 sqrt(R e).
+  th = chord_angle(ChordMethod::InsideOutside, R, e);
+  EXPECT_NEAR((R + e) * std::cos(th / 2), R - e, 1e-12);
+  EXPECT_NEAR(chord_length(ChordMethod::InsideOutside, R, e), 2 * (R + e) * std::sin(th / 2), 1e-10);
+  EXPECT_NEAR(chord_length(ChordMethod::InsideOutside, R, e), 0.12649, 1e-5);  // PAPERS.md: 0.1265 mm
+  EXPECT_GT(chord_length(ChordMethod::InsideOutside, R, e), chord_length(ChordMethod::Outside, R, e));
+  EXPECT_GT(chord_length(ChordMethod::Outside, R, e), chord_length(ChordMethod::Inside, R, e));
+  EXPECT_GT(chord_angle(ChordMethod::Inside, R, e), chord_angle(ChordMethod::Outside, R, e));
+  // The balanced offset at the longest chord is paper B's placement.
+  EXPECT_NEAR(vertex_offset(ChordMethod::InsideOutside, R, chord_length(ChordMethod::InsideOutside, R, e)), e, 1e-15);
+  EXPECT_NEAR(vertex_offset(ChordMethod::Outside, R, chord_length(ChordMethod::Outside, R, e)), e, 1e-15);
+  EXPECT_EQ(vertex_offset(ChordMethod::Inside, R, 0.1), 0);
+}
+
+TEST(UVFrame, PaperB3DArc) {
+  const auto blocks = gcode::parse(kPaperArcOnly, at(50, 0, 0));
+  const Segment g = make_segment(blocks[0]);
+  const Vec3 ps{50, 0, 0}, pe{0, -47.246, -16.366};
+  // CCW: origin Pe, U from Pe towards Ps, V = n x U, n towards +Z.
+  EXPECT_EQ(g.origin, pe);
+  const Vec3 u = unit(ps - pe);
+  EXPECT_NEAR(norm(g.u_hat - u), 0, 1e-15);
+  EXPECT_GT(g.normal.z, 0);
+  EXPECT_NEAR(norm(g.v_hat - cross(g.normal, g.u_hat)), 0, 1e-15);
+  EXPECT_NEAR(dot(g.normal, ps - pe), 0, 1e-12);
+  // Qs = (|PePs|, 0), Qc = (|PePs|/2, H), H >= 0 since the arc is 3 pi / 2.
+  const double d = norm(ps - pe);
+  EXPECT_NEAR(g.qs.u, d, 1e-12);
+  EXPECT_EQ(g.qs.v, 0);
+  EXPECT_NEAR(g.qc.u, d / 2, 1e-12);
+  EXPECT_NEAR(g.qc.v, std::sqrt(g.radius * g.radius - d * d / 4), 1e-12);
+  EXPECT_GT(g.qc.v, 0);
+  EXPECT_NEAR(g.sweep, 3 * kPi / 2, 1e-5);
+  EXPECT_NEAR(g.length, 50 * 3 * kPi / 2, 0.01);
+  // The centre maps back next to the programmed (0,0,0); the end radius of
+  // the block is 50.0003 (its end point is rounded), so it moves by ~0.0002.
+  EXPECT_LT(g.centre_shift, 3e-4);
+  // Ends exact; a quarter of the way the point is where rotating Ps by
+  // +90 degrees about n puts it (independent construction).
+  EXPECT_EQ(g.point(0), ps);
+  EXPECT_EQ(g.point(g.length), pe);
+  const Vec3 e1{1, 0, 0}, e2 = cross(g.normal, e1);
+  for (double phi : {kPi / 6, kPi / 2, kPi, 4 * kPi / 3}) {
+    const Vec3 want = 50 * std::cos(phi) * e1 + 50 * std::sin(phi) * e2;
+    EXPECT_LT(norm(g.point(g.length * phi / g.sweep) - want), 5e-4) << phi;
+  }
+}
+
+TEST(UVFrame, CwArcsAndFullCircles) {
+  // G2 from (10,0) to (0,-10) about the origin: a quarter, CW, origin Ps.
+  auto g = make_segment(gcode::parse("G2 X0 Y-10 I-10 J0 F60\n", at(10, 0, 0))[0]);
+  EXPECT_EQ(g.origin, (Vec3{10, 0, 0}));
+  EXPECT_NEAR(g.sweep, kPi / 2, 1e-12);
+  EXPECT_LT(g.qc.v, 0);  // theta < pi
+  EXPECT_LT(g.tangent(0).y, -0.999);
+  EXPECT_LT(norm(g.point(g.length / 2) - Vec3{10 * std::cos(kPi / 4), -10 * std::sin(kPi / 4), 0}), 1e-12);
+  // G2 the long way, 3 pi / 2: H >= 0.
+  g = make_segment(gcode::parse("G2 X0 Y10 I-10 J0 F60\n", at(10, 0, 0))[0]);
+  EXPECT_NEAR(g.sweep, 3 * kPi / 2, 1e-12);
+  EXPECT_GT(g.qc.v, 0);
+  // Full circles: G3 starts towards +Y, G2 towards -Y, V points to the centre.
+  for (bool ccw : {true, false}) {
+    g = make_segment(gcode::parse(ccw ? kPaperCircle : "G02X50.Y0.I-50.J0.F6000\n", at(50, 0, 0))[0]);
+    EXPECT_TRUE(g.full_circle);
+    EXPECT_NEAR(g.sweep, 2 * kPi, 0);
+    EXPECT_NEAR(g.length, 100 * kPi, 1e-9);
+    EXPECT_NEAR(norm(g.v_hat - Vec3{-1, 0, 0}), 0, 1e-15);
+    EXPECT_NEAR(g.tangent(0).y, ccw ? 1 : -1, 1e-12);
+    EXPECT_LT(norm(g.point(g.length / 4) - Vec3{0, ccw ? 50.0 : -50.0, 0}), 1e-9);
+    EXPECT_EQ(g.point(g.length), (Vec3{50, 0, 0}));
+  }
+  // Helix: the normal axis rises linearly with the path.
+  g = make_segment(gcode::parse("G3 X-10 Y0 Z5 I-10 J0 F60\n", at(10, 0, 0))[0]);
+  EXPECT_TRUE(g.helix());
+  EXPECT_NEAR(g.length, std::hypot(10 * kPi, 5), 1e-12);
+  EXPECT_NEAR(g.point(g.length / 2).z, 2.5, 1e-12);
+  EXPECT_NEAR(g.point(g.length / 2).y, 10, 1e-12);
+}
+
+TEST(PaperB, ThreeDArcTakes2_46Seconds) {
+  Config c;  // paper B's conditions are the defaults
+  EXPECT_EQ(c.cycle_s, 1e-3);
+  EXPECT_EQ(c.tol_mm, 2e-5);
+  EXPECT_NEAR(c.machine.amax.x * 3600, 3528000, 1e-6);
+  const Plan p = plan_text(kPaperArcOnly, c, at(50, 0, 0));
+  ASSERT_EQ(p.segs.size(), 1u);
+  EXPECT_NEAR(p.total_time, 2.46, 0.01);
+  EXPECT_EQ(p.segs[0].cap, Cap::Feed);  // 6000 mm/min is not capped by the chord
+  const auto samples = interpolate(p);
+  EXPECT_EQ(samples.size() - 1, static_cast<std::size_t>(std::ceil(p.total_time / 1e-3)));
+  EXPECT_NEAR((samples.size() - 1) * 1e-3, 2.46, 0.01);
+  // In the whole program (rapid in, arc, rapid out) the arc block is the same.
+  const Plan full = plan_text(kPaper3D, c);
+  ASSERT_EQ(full.segs.size(), 3u);
+  EXPECT_NEAR(full.segs[1].duration, 2.46, 0.01);
+  EXPECT_EQ(full.segs[1].v_start, 0);  // 90 degree corners: exact stops
+  EXPECT_EQ(full.segs[1].v_end, 0);
+}
+
+TEST(PaperB, EveryChordWithinToleranceOfTheTrueArc) {
+  // 3D arc. The true arc passes through Ps and Pe with the mean radius and
+  // its centre on their bisector in the plane of (Ps, Pc, Pe), next to Pc.
+  {
+    const Plan p = plan_text(kPaperArcOnly, {}, at(50, 0, 0));
+    const auto s = interpolate(p);
+    const Vec3 ps{50, 0, 0}, pe{0, -47.246, -16.366}, pc{0, 0, 0};
+    const double R = (norm(ps - pc) + norm(pe - pc)) / 2;
+    Vec3 n = unit(cross(ps - pc, pe - pc));
+    if (n.z < 0) n = -1.0 * n;
+    const Vec3 m = 0.5 * (ps + pe), along = unit(pe - ps);
+    Vec3 w = (pc - m) - dot(pc - m, along) * along;
+    w = unit(w);
+    const Vec3 c = m + std::sqrt(R * R - dot(pe - ps, pe - ps) / 4) * w;
+    EXPECT_LT(norm(c - pc), 3e-4);
+    const double worst = max_chord_distance(s, c, n, R);
+    // At 100 mm/s the chord is 0.1 mm, under the longest (0.1265 mm): with
+    // the ends at R + e and the middle at R - e, e = 0.1^2 / (16 R).
+    EXPECT_LE(worst, 2e-5);
+    EXPECT_NEAR(worst, 0.01 / (16 * 50), 0.01 * 0.01 / (16 * 50));
+    const Report r = analyse(p, s);
+    EXPECT_TRUE(r.tol_ok);
+    EXPECT_NEAR(r.max_chord_error, worst, 1e-9);
+  }
+  // The R 50 full circle from (50, 0), CCW.
+  {
+    const Plan p = plan_text(kPaperCircle, {}, at(50, 0, 0));
+    const auto s = interpolate(p);
+    EXPECT_NEAR(p.total_time, 100 * kPi / 100 + 100 / 980.0, 0.01);
+    const double worst = max_chord_distance(s, {0, 0, 0}, {0, 0, 1}, 50);
+    EXPECT_LE(worst, 2e-5);
+    EXPECT_NEAR(worst, 0.01 / (16 * 50), 0.01 * 0.01 / (16 * 50));
+    EXPECT_EQ(s.back().p, (Vec3{50, 0, 0}));
+  }
+}
+
+TEST(PaperB, PerAxisLimitsNeverExceeded) {
+  const char* programs[] = {
+      kPaper3D,
+      kPaperCircle,
+      // Lines, corners, a tangent line-arc-line, a helix, a G18 arc, rapids.
+      "G0 X10 Y5\nG1 X40 Y5 F9000\nG3 X50 Y15 I0 J10\nG1 X50 Y40\nG1 X30 Y60 Z-3\n"
+      "G2 X10 Y60 Z-8 I-10 J0\nG18 G3 X0 Z-18 I-10 K0\nG0 X0 Y0 Z0\n",
+      // A gentle polyline (small corners keep speed) at a loose tolerance.
+      "G1 X10 Y1 F6000\nX20 Y0\nX30 Y1\nX40 Y0\nX50 Y1\n",
+  };
+  for (double tol : {2e-5, 0.01}) {
+    for (const char* prog : programs) {
+      Config c;
+      c.tol_mm = tol;
+      c.machine.vmax = {120, 80, 50};
+      c.machine.amax = {980, 700, 500};
+      const Plan p = plan_text(prog, c, at(50, 0, 0));
+      const auto s = interpolate(p);
+      const Vec3 a = peak_accel(s, c.cycle_s);
+      const Report r = analyse(p, s);
+      for (int i = 0; i < 3; ++i) {
+        EXPECT_LE(a[i], c.machine.amax[i] * (1 + 1e-9)) << "axis " << i << " tol " << tol << "\n" << prog;
+        EXPECT_LE(r.axes[i].peak_v, c.machine.vmax[i] * (1 + 1e-9)) << "axis " << i << "\n" << prog;
+        EXPECT_TRUE(r.axes[i].a_ok && r.axes[i].v_ok);
+      }
+      EXPECT_TRUE(r.tol_ok) << "max chord error " << r.max_chord_error << " tol " << tol << "\n" << prog;
+    }
+  }
+}
+
+TEST(Junctions, CollinearLinesKeepTheFeed) {
+  const Plan p = plan_text("G1 X10 F6000\nX20\nX30\n");
+  ASSERT_EQ(p.segs.size(), 3u);
+  EXPECT_DOUBLE_EQ(p.segs[0].v_end, 100);
+  EXPECT_DOUBLE_EQ(p.segs[1].v_start, 100);
+  EXPECT_DOUBLE_EQ(p.segs[1].v_end, 100);
+}
+
+TEST(Junctions, PerAxisAndToleranceRules) {
+  // Directions (1, 0.1) then (1, -0.1): X's component does not change, Y's
+  // changes by 2 * 0.1/sqrt(1.01). Lines use a_t = A / 0.995..., Y's share
+  // of it is a_t * 0.0995...
+  const double dy = 0.1 / std::sqrt(1.01), dx = 1 / std::sqrt(1.01);
+  const double at = 980 / dx, use_y = at * dy;
+  const double per_axis = (980 - use_y) * 1e-3 / (2 * dy);  // ~4.43 mm/s
+  const double delta = 2 * std::atan(0.1);
+  const char* prog = "G1 X10 Y1 F6000\nX20 Y0\n";
+  {
+    Config c;
+    c.tol_mm = 0.01;  // tolerance rule ~200 mm/s: the per-axis rule decides
+    const Plan p = plan_text(prog, c);
+    EXPECT_NEAR(p.junction_limit[1], per_axis, 1e-9);
+    EXPECT_NEAR(p.segs[0].v_end, per_axis, 1e-9);
+    EXPECT_NEAR(p.segs[1].v_start, per_axis, 1e-9);
+  }
+  {
+    Config c;
+    c.tol_mm = 1e-4;  // tolerance rule ~1.02 mm/s decides
+    const double eps = 1e-4 * (1 - 1e-3);
+    const double tol_rule = 2 * eps / std::sin(delta / 2) / 1e-3 - at * 1e-3;
+    EXPECT_LT(tol_rule, per_axis);
+    const Plan p = plan_text(prog, c);
+    EXPECT_NEAR(p.junction_limit[1], tol_rule, 1e-9);
+    EXPECT_NEAR(p.segs[1].v_start, tol_rule, 1e-9);
+  }
+  {
+    // At paper B's 0.02 um the corner is an exact stop.
+    const Plan p = plan_text(prog);
+    EXPECT_EQ(p.segs[0].v_end, 0);
+  }
+}
+
+TEST(Junctions, LookAheadLimitsByDistance) {
+  // A 0.1 mm block between two corners (stops): it cannot reach 100 mm/s.
+  const Plan p = plan_text("G1 X10 F6000\nY0.1\nX20\n");
+  const double a = 980;
+  EXPECT_LE(p.segs[1].v_cruise, std::sqrt(a * 0.1) + 1e-9);  // triangle from 0 to 0 over 0.1 mm
+  // Look-ahead across blocks: collinear short blocks reach full speed.
+  const Plan q = plan_text("G1 X1 F6000\nX2\nX3\nX4\nX5\nX6\nX7\nX8\nX9\nX30\n");
+  double vmax = 0;
+  for (const auto& s : q.segs) {
+    vmax = std::max(vmax, s.v_cruise);
+    EXPECT_LE(s.v_start * s.v_start, s.v_end * s.v_end + 2 * s.a_t * s.geom.length + 1e-9);
+    EXPECT_LE(s.v_end * s.v_end, s.v_start * s.v_start + 2 * s.a_t * s.geom.length + 1e-9);
+  }
+  EXPECT_DOUBLE_EQ(vmax, 100);
+  EXPECT_NEAR(q.segs[6].v_start, 100, 1e-9);  // 100^2 / (2 * 980) = 5.1 mm to reach it
+}
+
+TEST(ChordCap, FeedCappedByEachPlacement) {
+  for (ChordMethod m : {ChordMethod::Inside, ChordMethod::Outside, ChordMethod::InsideOutside}) {
+    Config c;
+    c.chord = m;
+    const Plan p = plan_text("G03X50.Y0.I-50.J0.F12000\n", c, at(50, 0, 0));
+    const double cap = chord_length(m, 50, 2e-5 * (1 - 1e-3)) / 1e-3;
+    EXPECT_EQ(p.segs[0].cap, Cap::Chord) << chord_name(m);
+    EXPECT_NEAR(p.segs[0].v_cap, cap, 1e-9);
+    const auto s = interpolate(p);
+    const double worst = max_chord_distance(s, {0, 0, 0}, {0, 0, 1}, 50);
+    EXPECT_LE(worst, 2e-5) << chord_name(m);
+    EXPECT_GT(worst, 0.9 * 2e-5) << chord_name(m);
+  }
+}
+
+TEST(ChordCap, CentripetalCap) {
+  // R 1 mm at 6000 mm/min: v^2/R = 10000 > sqrt(3)/2 * A_plane.
+  Config c;
+  c.tol_mm = 0.001;
+  const Plan p = plan_text("G3 X1 Y0 I-1 J0 F6000\n", c, at(1, 0, 0));
+  EXPECT_EQ(p.segs[0].cap, Cap::Centripetal);
+  EXPECT_NEAR(p.segs[0].v_cap * p.segs[0].v_cap / 1.0, std::sqrt(3.0) / 2 * 980 * 0.99, 1e-6);
+}
+
+TEST(TwoStage, PulsePathWithinToleranceAndOnePulse) {
+  const Plan p = plan_text(kPaperArcOnly, {}, at(50, 0, 0));
+  const auto s = interpolate(p);
+  const double spm = 1000;  // 1 um per step
+  const auto chords = chords_in_steps(s, spm);
+  ASSERT_EQ(chords.size(), s.size() - 1);
+  const auto pulses = two_stage_model(chords, 1e-3);
+  // Every chord's pulses, in order and time, and the end point exact.
+  std::int64_t x = std::llround(50 * spm), y = 0, z = 0;
+  std::size_t k = 0;
+  double worst = 0, t_prev = 0;
+  const Segment& g = p.segs[0].geom;
+  std::int64_t cx = x, cy = y, cz = z;  // start of the current chord
+  for (std::size_t n = 0; n < chords.size(); ++n) {
+    const auto& c = chords[n];
+    const std::size_t count = std::llabs(c.dx) + std::llabs(c.dy) + std::llabs(c.dz);
+    for (std::size_t j = 0; j < count; ++j, ++k) {
+      ASSERT_LT(k, pulses.size());
+      const auto& tp = pulses[k];
+      ASSERT_GT(tp.t, n * 1e-3 - 1e-12);
+      ASSERT_LE(tp.t, (n + 1) * 1e-3 + 1e-12);
+      ASSERT_GE(tp.t, t_prev);
+      t_prev = tp.t;
+      (tp.pulse.axis == Axis::X ? x : tp.pulse.axis == Axis::Y ? y : z) += tp.pulse.sign;
+      const Vec3 pos{x / spm, y / spm, z / spm};
+      worst = std::max(worst, g.distance(pos));
+      // Within sqrt(3)/2 step of the chord in steps (Linear3's bound).
+      const Vec3 a{double(cx), double(cy), double(cz)}, d{double(c.dx), double(c.dy), double(c.dz)};
+      const Vec3 q{double(x), double(y), double(z)};
+      const double l2 = dot(d, d);
+      const double t = std::clamp(dot(q - a, d) / l2, 0.0, 1.0);
+      ASSERT_LE(norm(q - (a + t * d)), std::sqrt(3.0) / 2 + 1e-9);
+    }
+    cx += c.dx, cy += c.dy, cz += c.dz;
+    ASSERT_EQ(x, cx);
+    ASSERT_EQ(y, cy);
+    ASSERT_EQ(z, cz);
+  }
+  EXPECT_EQ(k, pulses.size());
+  EXPECT_EQ(x, 0);
+  EXPECT_EQ(y, std::llround(-47.246 * spm));
+  EXPECT_EQ(z, std::llround(-16.366 * spm));
+  // Ideal path to pulse path: tolerance + rounding of the chord ends
+  // (sqrt(3)/2 step) + Linear3 (sqrt(3)/2 step).
+  EXPECT_LE(worst, 2e-5 + std::sqrt(3.0) / spm);
+  EXPECT_GT(worst, 0.3 / spm);  // the bound is not vacuous
+  EXPECT_EQ(pulse_stages().count("model"), 1u);
+}
+
+}  // namespace
+}  // namespace contour::planner
