@@ -114,7 +114,23 @@ TEST(Runner, TStateLimitIsAnError) {
   RunOptions opt;
   opt.max_tstates = 1000;
   EXPECT_THROW(run_bare(*m, bus, opt), RunError);
-  EXPECT_EQ(m->tstates(), 1000u);
+  EXPECT_EQ(m->tstates(), 1010u);  // the first step that ends past the limit
+}
+
+TEST(Runner, ARunUsingExactlyTheLimitFinishes) {
+  RamBus bus;
+  auto m = make_iss(bus, Mode::i8085);
+  load_program(bus, {0x00, 0x76}, "nop_hlt.bin", 0);  // 4 + 5 T-states
+  m->reset();
+  RunOptions opt;
+  opt.max_tstates = 9;
+  EXPECT_EQ(run_bare(*m, bus, opt).tstates, 9u);
+  RamBus bus2;
+  auto m2 = make_iss(bus2, Mode::i8085);
+  load_program(bus2, {0x00, 0x76}, "nop_hlt.bin", 0);
+  m2->reset();
+  opt.max_tstates = 8;
+  EXPECT_THROW(run_bare(*m2, bus2, opt), RunError);
 }
 
 TEST(Runner, UnsupportedBdosFunctionIsAnError) {

@@ -30,9 +30,9 @@ void run_step(Machine& m, RamBus& bus, const RunOptions& opt, RunResult& res) {
   if (s.undocumented)
     throw RunError("undocumented 8085 opcode " + hex2(s.bytes[0]) + " (" + disassemble(s.bytes, s.mode) +
                    ") at PC=" + hex4(s.pc) + ": not implemented (docs/i8085.md)");
-  if (opt.max_tstates != 0 && m.tstates() >= opt.max_tstates)
-    throw RunError("stopped at the T-state limit " + std::to_string(opt.max_tstates) + " (PC=" +
-                   hex4(m.regs().pc) + "), the program did not finish");
+  if (opt.max_tstates != 0 && m.tstates() > opt.max_tstates)
+    throw RunError("stopped after " + std::to_string(m.tstates()) + " T-states, past the limit " +
+                   std::to_string(opt.max_tstates) + " (PC=" + hex4(m.regs().pc) + "): the program did not finish");
 }
 
 std::uint16_t load_program(RamBus& bus, const std::vector<std::uint8_t>& file, const std::string& name,

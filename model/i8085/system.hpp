@@ -45,7 +45,7 @@ class RunError : public std::runtime_error {
 };
 
 struct RunOptions {
-  std::uint64_t max_tstates = 0;   // 0: no limit
+  std::uint64_t max_tstates = 0;   // the run may use at most this many; 0: no limit
   std::ostream* trace = nullptr;   // one trace_line per step when set
 };
 
@@ -57,7 +57,8 @@ struct RunResult {
 // One step of a run, for loops that drive interrupts themselves: steps the
 // machine, writes the trace line, stamps new port writes with the step's
 // starting T-state, counts the step in `res`; throws RunError on an
-// undocumented 8085 opcode or when opt.max_tstates is reached.
+// undocumented 8085 opcode or when the machine's T-state count passes
+// opt.max_tstates.
 void run_step(Machine& m, RamBus& bus, const RunOptions& opt, RunResult& res);
 
 // Loads a program: Intel HEX (by content: first non-blank character ':')

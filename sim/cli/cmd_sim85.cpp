@@ -30,7 +30,7 @@ constexpr const char* kUsage =
     "  last line: `T-states: N` (every instruction, the final HLT / OUT 0 included)\n"
     "  --cpu          8085 (default) or 8080: T-states and flags of that CPU\n"
     "  --trace FILE   one line per instruction (format: docs/i8085.md)\n"
-    "  --max-tstates  stop with an error (exit 1) after N T-states; default: no limit\n"
+    "  --max-tstates  the run may use at most N T-states, else exit 1; default: no limit\n"
     "  --engine       machine that runs it (default iss)\n"
     "exit status: 0 finished, 1 run error (limit, undocumented opcode, BDOS), 2 bad input\n";
 
