@@ -77,6 +77,7 @@ class Lockstep {
   std::uint64_t tstates() const { return iss_->tstates(); }
   std::uint64_t steps() const { return steps_; }
   bool halted() const { return iss_->halted(); }
+  bool ie() const { return iss_->ie(); }
   const i8085::Step& last() const { return iss_->last(); }
   i8085::Regs regs() const { return iss_->regs(); }
   const std::vector<Access>& last_writes() const { return iss_bus_.log; }

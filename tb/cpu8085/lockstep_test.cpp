@@ -5,6 +5,8 @@
 // random run with seed 1.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -105,6 +107,70 @@ void random_run(std::uint64_t seed, std::uint64_t steps) {
 TEST(Lockstep, RandomStreamsWithInterrupts) {
   const std::uint64_t n = 4 * scale();
   for (std::uint64_t seed = 1; seed <= n; ++seed) random_run(seed, 250000);
+}
+
+// Every assembled sw8085 program (the .hex files under the build tree's
+// sw8085/), run in lockstep from reset: bare programs until HLT, CP/M-style
+// ones (loaded at 0x0100) with the CP/M set-up of `contour sim85 --cpm` until
+// their final OUT 0. Programs that wait for interrupts are run to a T-state
+// cap, still in lockstep.
+TEST(Lockstep, Sw8085Programs) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> hexes;
+  for (const auto& e : fs::recursive_directory_iterator(contour::sw8085::kHexDir))
+    if (e.is_regular_file() && e.path().extension() == ".hex") hexes.push_back(e.path());
+  std::sort(hexes.begin(), hexes.end());
+  ASSERT_FALSE(hexes.empty()) << "no assembled programs under " << contour::sw8085::kHexDir;
+  constexpr std::uint64_t kCap = 20'000'000;
+  for (const fs::path& p : hexes) {
+    SCOPED_TRACE(p.string());
+    const i8085::HexImage img = i8085::read_hex_file(p.string());
+    std::array<std::uint8_t, 65536> mem{};
+    img.load_into(mem);
+    const bool cpm = img.lowest() >= 0x0100;
+    if (cpm) {
+      mem[0x0000] = 0xD3;  // OUT 0: end
+      mem[0x0001] = 0x00;
+      mem[0x0005] = 0xD3;  // OUT 1; RET: BDOS
+      mem[0x0006] = 0x01;
+      mem[0x0007] = 0xC9;
+    }
+    Lockstep ls(mem);
+    if (cpm) {
+      i8085::Regs r{};
+      r.pc = 0x0100;
+      r.sp = 0xFFFE;
+      ls.set_regs(r);
+    }
+    bool ended = false;
+    int pulses = 0;  // RST 7.5 pulses given to a program halted with IE on
+    Pins pins;
+    while (ls.tstates() < kCap) {
+      ASSERT_TRUE(ls.step()) << ls.report();
+      const i8085::Step& s = ls.last();
+      if (pins.rst75) {
+        pins.rst75 = false;
+        ls.set_pins(pins);
+      }
+      if (!cpm && ls.halted()) {
+        if (ls.ie() && pulses < 5) {
+          ++pulses;
+          pins.rst75 = true;
+          ls.set_pins(pins);
+          continue;
+        }
+        ended = true;
+        break;
+      }
+      if (cpm && s.kind == i8085::StepKind::instruction && s.bytes[0] == 0xD3 && s.bytes[1] == 0x00) {
+        ended = true;
+        break;
+      }
+    }
+    std::printf("  %-40s %s, %d RST 7.5 pulses, %llu steps, %llu T-states\n", p.filename().c_str(),
+                ended ? "ended" : "capped", pulses, static_cast<unsigned long long>(ls.steps()),
+                static_cast<unsigned long long>(ls.tstates()));
+  }
 }
 
 }  // namespace
