@@ -1,0 +1,275 @@
+#include "host.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "i8085/hex.hpp"
+#include "sw8085_paths.hpp"  // generated: kHexDir
+
+namespace contour::sw8085 {
+
+Program Program::load(const std::string& hex_path, const std::string& lst_path) {
+  Program p;
+  i8085::read_hex_file(hex_path).load_into(p.image);
+  std::ifstream lst(lst_path);
+  if (!lst) throw std::runtime_error(lst_path + ": cannot read the listing");
+  // Symbol table lines: "NAME:<spaces>HHHH DEFINED AT LINE n".
+  std::string line;
+  while (std::getline(lst, line)) {
+    const auto colon = line.find(':');
+    const auto def = line.find(" DEFINED AT LINE");
+    if (colon == std::string::npos || def == std::string::npos || colon == 0 || def < 4) continue;
+    const std::string name = line.substr(0, colon);
+    if (name.find(' ') != std::string::npos) continue;
+    const std::string hex = line.substr(def - 4, 4);
+    p.symbols[name] = static_cast<std::uint16_t>(std::stoul(hex, nullptr, 16));
+  }
+  if (p.symbols.empty()) throw std::runtime_error(lst_path + ": no symbol table in the listing");
+  return p;
+}
+
+const Program& Program::builtin() {
+  static const Program p = load(std::string(kHexDir) + "/interp/interp.hex", std::string(kHexDir) + "/interp/interp.lst");
+  return p;
+}
+
+std::uint16_t Program::symbol(const std::string& name) const {
+  const auto it = symbols.find(name);
+  if (it == symbols.end()) throw std::runtime_error("interp.lst: symbol " + name + " is missing");
+  return it->second;
+}
+
+BoardBus::BoardBus(const Program& p) {
+  std::copy(p.image.begin(), p.image.begin() + kRomEnd, mem.begin());
+}
+
+std::uint8_t BoardBus::read(std::uint16_t addr) {
+  if (addr < kRomEnd || (addr >= kRamBase && addr < kRamEnd) || (addr >= kMailbox && addr < kMailboxEnd))
+    return mem[addr];
+  if (fault.empty()) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "read of unmapped address %04X", addr);
+    fault = buf;
+  }
+  return 0xFF;
+}
+
+void BoardBus::write(std::uint16_t addr, std::uint8_t v) {
+  if ((addr >= kRamBase && addr < kRamEnd) || (addr >= kMailbox && addr < kMailboxEnd)) {
+    mem[addr] = v;
+    return;
+  }
+  if (fault.empty()) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "write of %02X to %s address %04X", v, addr < kRomEnd ? "ROM" : "unmapped", addr);
+    fault = buf;
+  }
+}
+
+std::uint8_t BoardBus::in(std::uint8_t port) {
+  if (port == kPortEdges) return edges;
+  if (fault.empty()) fault = "IN from unmapped port " + std::to_string(port);
+  return 0xFF;
+}
+
+void BoardBus::out(std::uint8_t port, std::uint8_t v) {
+  if (port == kPortStep || port == kPortDone || port == 0x13) {
+    outs.push_back({port, v});
+    return;
+  }
+  if (fault.empty()) fault = "OUT to unmapped port " + std::to_string(port);
+}
+
+Host::Host(const Program& p, const i8085::MachineFactory& factory)
+    : bus_(p), machine_(factory(bus_, i8085::Mode::i8085)), codes_(Codes::from_symbols(p.symbols)) {
+  boot();
+}
+
+void Host::step_checked() {
+  machine_->step();
+  if (!bus_.fault.empty()) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, " (PC was %04X)", machine_->last().pc);
+    throw std::runtime_error("sw8085: " + bus_.fault + buf);
+  }
+  if (machine_->last().undocumented) throw std::runtime_error("sw8085: undocumented opcode executed");
+}
+
+void Host::boot() {
+  machine_->reset();
+  auto mb = bus_.mailbox();
+  for (int n = 0; !(mb[kReady] == kReadyMagic && machine_->halted()); ++n) {
+    if (n > 100000) throw std::runtime_error("sw8085: the program did not become ready");
+    step_checked();
+  }
+  if (mb[kLayout] != kLayoutVersion) throw std::runtime_error("sw8085: mailbox layout version mismatch");
+  sp_idle_ = machine_->regs().sp;
+  bus_.outs.clear();
+}
+
+SlotMove Host::queue(const Move& m) {
+  validate<24>(m);
+  const std::uint8_t base = kSlots[next_slot_];
+  auto& held = slots_[next_slot_];
+  if (held && !done(*held))
+    throw std::logic_error("sw8085: slot " + std::to_string(base) + " still holds " + describe(held->move));
+  auto mb = bus_.mailbox();
+  SlotMove sm = encode(m, base, codes_, mb);
+  mb[static_cast<std::uint8_t>(base + kStatus)] = kQueued;
+  held = sm;
+  next_slot_ ^= 1;
+  return sm;
+}
+
+CommandResult Host::command() {
+  CommandResult r;
+  bus_.outs.clear();
+  machine_->set_rst75(true);
+  ++bus_.edges;
+  bool raised = true, acked = false;
+  std::uint64_t t0 = 0;
+  for (int n = 0;; ++n) {
+    if (n > 100000) throw std::runtime_error("sw8085: the interrupt routine did not return");
+    const std::uint64_t before = machine_->tstates();
+    step_checked();
+    if (raised) {
+      machine_->set_rst75(false);
+      raised = false;
+    }
+    if (!acked && machine_->last().kind == i8085::StepKind::interrupt) {
+      acked = true;
+      t0 = before;
+    }
+    if (acked && machine_->regs().sp == sp_idle_) break;
+  }
+  r.tstates = static_cast<int>(machine_->tstates() - t0);
+  for (const auto& w : bus_.outs) {
+    if (w.port == kPortDone) r.move_ended = true;
+    if (w.port != kPortStep) continue;
+    if (r.pulse) throw std::runtime_error("sw8085: two step pulses for one command pulse");
+    r.pulse = decode_pattern(w.value);
+    if (!r.pulse) throw std::runtime_error("sw8085: OUT 10h with a bad step pattern " + std::to_string(w.value));
+  }
+  return r;
+}
+
+State Host::state(const SlotMove& sm, std::uint64_t pulses) const {
+  auto& self = const_cast<Host&>(*this);
+  return decode(sm, self.bus_.mailbox(), codes_, pulses);
+}
+
+bool Host::done(const SlotMove& sm) const {
+  const std::uint8_t mode = bus_.mem[kMailbox + sm.base];
+  return mode == codes_.fin_p || mode == codes_.fin_n;
+}
+
+std::uint32_t Host::overruns() const {
+  const auto* mb = bus_.mem.data() + kMailbox;
+  return mb[kOverruns] | mb[kOverruns + 1] << 8 | mb[kOverruns + 2] << 16;
+}
+
+std::uint16_t Host::idle_commands() const {
+  const auto* mb = bus_.mem.data() + kMailbox;
+  return static_cast<std::uint16_t>(mb[kIdleCount] | mb[kIdleCount + 1] << 8);
+}
+
+namespace {
+
+// An upper bound of the pulses of a move: a line has |XE| + |YE|; an arc
+// travels at most |dx| + |dy| <= 2R per quadrant, 5 quadrants.
+std::uint64_t pulse_bound(const Move& m) {
+  auto a = [](std::int64_t v) { return static_cast<std::uint64_t>(v < 0 ? -v : v); };
+  if (!m.is_arc()) return a(m.xe) + a(m.ye);
+  return 10 * (a(m.xs) + a(m.ys)) + 16;
+}
+
+}  // namespace
+
+RunResult Host::run(const Move& m, std::vector<int>* tstates) {
+  validate<24>(m);
+  RunResult r;
+  if (!m.is_arc() && m.xe == 0 && m.ye == 0) {
+    r.initial_state.done = true;
+    r.final_state = r.initial_state;
+    return r;
+  }
+  const SlotMove sm = queue(m);
+  r.initial_state = state(sm, 0);
+  const std::uint64_t bound = pulse_bound(m);
+  std::uint64_t n = 0;
+  while (!done(sm)) {
+    const CommandResult c = command();
+    if (!c.pulse)
+      throw std::logic_error("sw8085: command pulse " + std::to_string(n + 1) + " of " + describe(m) +
+                             " gave no output pulse");
+    ++n;
+    r.steps.push_back({*c.pulse, state(sm, n)});
+    if (tstates) tstates->push_back(c.tstates);
+    if (n > bound) throw std::logic_error("sw8085: " + describe(m) + " did not end after " + std::to_string(n) + " pulses");
+  }
+  r.final_state = r.steps.empty() ? r.initial_state : r.steps.back().state;
+  return r;
+}
+
+Host::Timed Host::drive(const std::vector<Move>& moves, double period) {
+  Timed res;
+  const std::uint32_t ovr0 = overruns();
+  const std::uint16_t idle0 = idle_commands();
+  std::size_t next = 0;
+  std::optional<SlotMove> last;
+  std::uint64_t bound = 0;
+  for (const auto& m : moves) bound += pulse_bound(m);
+  auto slot_free = [&] {
+    const auto& held = slots_[next_slot_];
+    return !held || done(*held);
+  };
+  auto feed = [&] {
+    while (next < moves.size() && slot_free()) {
+      const Move& m = moves[next++];
+      if (!m.is_arc() && m.xe == 0 && m.ye == 0) continue;
+      last = queue(m);
+    }
+  };
+  feed();
+  double next_t = static_cast<double>(machine_->tstates()) + period;
+  bool raised = false;
+  bus_.outs.clear();
+  while (true) {
+    feed();
+    if (next == moves.size() && (!last || done(*last))) {
+      res.all_done = true;
+      break;
+    }
+    if (res.commands > 4 * bound + 1000) break;
+    if (static_cast<double>(machine_->tstates()) >= next_t) {
+      machine_->set_rst75(true);
+      ++bus_.edges;
+      ++res.commands;
+      raised = true;
+      next_t += period;
+    }
+    step_checked();
+    if (raised) {
+      machine_->set_rst75(false);
+      raised = false;
+    }
+    for (const auto& w : bus_.outs)
+      if (w.port == kPortStep) ++res.pulses;
+    bus_.outs.clear();
+  }
+  // Let the routine that is running finish, so that the counts are final.
+  for (int n = 0; n < 100000 && machine_->regs().sp != sp_idle_; ++n) step_checked();
+  res.overruns = overruns() - ovr0;
+  res.idle_commands = static_cast<std::uint16_t>(idle_commands() - idle0);
+  return res;
+}
+
+RunResult ProgramEngine::run(const Move& m) {
+  validate<24>(m);
+  Host host(Program::builtin(), factory_);
+  return host.run(m);
+}
+
+}  // namespace contour::sw8085

@@ -1,0 +1,201 @@
+#include "mailbox.hpp"
+
+#include <stdexcept>
+
+#include "interp/circular.hpp"
+
+namespace contour::sw8085 {
+namespace {
+
+std::uint8_t at(std::uint8_t base, int off) { return static_cast<std::uint8_t>(base + off); }
+
+void put24(std::span<std::uint8_t, 256> mb, std::uint8_t addr, std::uint32_t v) {
+  for (int i = 0; i < 3; ++i) mb[static_cast<std::uint8_t>(addr + i)] = static_cast<std::uint8_t>(v >> (8 * i));
+}
+
+std::uint32_t get24(std::span<const std::uint8_t, 256> mb, std::uint8_t addr) {
+  std::uint32_t v = 0;
+  for (int i = 0; i < 3; ++i) v |= std::uint32_t{mb[static_cast<std::uint8_t>(addr + i)]} << (8 * i);
+  return v;
+}
+
+// A distance counter in the program's pre-borrowed form: the low byte of v,
+// and (v - 1) >> 8 as 16 bits, so that the low byte reaching 0 is the moment
+// to take one from the high part; v = 0 is (0xFFFF, 0).
+struct Counter {
+  std::uint8_t low;
+  std::uint16_t high;
+};
+
+Counter to_counter(std::int64_t v) {
+  return {static_cast<std::uint8_t>(v & 0xFF), static_cast<std::uint16_t>(((v - 1) >> 8) & 0xFFFF)};
+}
+
+std::int64_t from_counter(Counter c) {
+  if (c.high == 0xFFFF && c.low == 0) return 0;
+  return std::int64_t{c.high} * 256 + (c.low == 0 ? 256 : c.low);
+}
+
+std::uint8_t need(const std::map<std::string, std::uint16_t>& s, const char* name) {
+  const auto it = s.find(name);
+  if (it == s.end()) throw std::runtime_error(std::string("interp.lst: symbol ") + name + " is missing");
+  return static_cast<std::uint8_t>(it->second);
+}
+
+std::int64_t abs64(std::int64_t v) { return v < 0 ? -v : v; }
+
+}  // namespace
+
+Codes Codes::from_symbols(const std::map<std::string, std::uint16_t>& s) {
+  Codes c{};
+  c.idle = need(s, "C_IDLE");
+  c.fin_p = need(s, "C_FINP");
+  c.fin_n = need(s, "C_FINN");
+  c.lyo = need(s, "C_LYO");
+  c.aix = need(s, "C_AIX");
+  c.aoy = need(s, "C_AOY");
+  c.aiy = need(s, "C_AIY");
+  c.aox = need(s, "C_AOX");
+  c.eix = need(s, "C_EIX");
+  c.eoy = need(s, "C_EOY");
+  c.eiy = need(s, "C_EIY");
+  c.eox = need(s, "C_EOX");
+  c.fixp = need(s, "C_FIXP");
+  c.fixn = need(s, "C_FIXN");
+  c.foyp = need(s, "C_FOYP");
+  c.foyn = need(s, "C_FOYN");
+  c.fiyp = need(s, "C_FIYP");
+  c.fiyn = need(s, "C_FIYN");
+  c.foxp = need(s, "C_FOXP");
+  c.foxn = need(s, "C_FOXN");
+  return c;
+}
+
+std::optional<Pulse> decode_pattern(std::uint8_t v) {
+  const bool x = v & 0x01, y = v & 0x04;
+  if (x == y || (v & 0xF0) != 0) return std::nullopt;
+  if (x) return Pulse{Axis::X, static_cast<std::int8_t>((v & 0x02) ? -1 : +1)};
+  return Pulse{Axis::Y, static_cast<std::int8_t>((v & 0x08) ? -1 : +1)};
+}
+
+SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<std::uint8_t, 256> mb) {
+  SlotMove sm;
+  sm.move = m;
+  sm.base = base;
+  sm.arc = m.is_arc();
+  if (!sm.arc) {
+    const std::int64_t a = abs64(m.xe), b = abs64(m.ye);
+    if (a == 0 && b == 0) throw std::logic_error("sw8085::encode: a line of length 0 is done at once, not queued");
+    sm.a = a;
+    sm.b = b;
+    sm.sx = m.xe < 0 ? -1 : +1;
+    sm.sy = m.ye < 0 ? -1 : +1;
+    mb[at(base, kMode)] = a == 0 ? codes.lyo : line::kModeNonNeg;
+    put24(mb, at(base, line::kD), 0);
+    const Counter rx = to_counter(a), ry = to_counter(b);
+    mb[at(base, line::kRxl)] = rx.low;
+    mb[at(base, line::kRxh)] = static_cast<std::uint8_t>(rx.high);
+    mb[at(base, line::kRxh + 1)] = static_cast<std::uint8_t>(rx.high >> 8);
+    mb[at(base, line::kRyl)] = ry.low;
+    mb[at(base, line::kRyh + 1)] = static_cast<std::uint8_t>(ry.high);
+    mb[at(base, line::kRyh)] = static_cast<std::uint8_t>(ry.high >> 8);
+    mb[at(base, line::kPatX)] = pattern(Axis::X, sm.sx);
+    mb[at(base, line::kPatY)] = pattern(Axis::Y, sm.sy);
+    mb[at(base, line::kAxes)] = static_cast<std::uint8_t>((a > 0) + (b > 0));
+    put24(mb, at(base, line::kNotB), static_cast<std::uint32_t>(~b & 0xFFFFFF));
+    put24(mb, at(base, line::kA), static_cast<std::uint32_t>(a));
+    return sm;
+  }
+  const auto plan = Circular<24>::validate(m.xs, m.ys, m.xe, m.ye, m.sense);
+  const int q = plan.q_start;
+  const bool ix = inward_is_x(q, m.sense);
+  const std::int64_t cx = abs64(m.xs), cy = abs64(m.ys), ex = abs64(m.xe), ey = abs64(m.ye);
+  std::uint8_t mode;
+  if (plan.crossings > 0) {
+    mode = ix ? codes.aix : codes.aiy;
+  } else {
+    const bool in_done = ix ? cx == ex : cy == ey;
+    const bool out_done = ix ? cy == ey : cx == ex;
+    if (in_done && out_done) throw std::logic_error("sw8085::encode: an arc with k = 0 that starts at its end");
+    if (in_done) mode = ix ? codes.foyp : codes.foxp;
+    else if (out_done) mode = ix ? codes.fixp : codes.fiyp;
+    else mode = ix ? codes.eix : codes.eiy;
+  }
+  mb[at(base, kMode)] = mode;
+  mb[at(base, arc::kPar)] = 0;
+  put24(mb, at(base, arc::kD), 0);
+  put24(mb, at(base, arc::kCx), static_cast<std::uint32_t>(cx));
+  put24(mb, at(base, arc::kEx), static_cast<std::uint32_t>(ex));
+  put24(mb, at(base, arc::kCy), static_cast<std::uint32_t>(cy));
+  put24(mb, at(base, arc::kEy), static_cast<std::uint32_t>(ey));
+  mb[at(base, arc::kQ)] = static_cast<std::uint8_t>(q);
+  mb[at(base, arc::kK)] = static_cast<std::uint8_t>(plan.crossings);
+  mb[at(base, arc::kQstep)] = m.sense == Sense::CCW ? 1 : 3;
+  for (int qq = 0; qq < 4; ++qq) {
+    const bool qix = inward_is_x(qq, m.sense);
+    const Axis in = qix ? Axis::X : Axis::Y, out = qix ? Axis::Y : Axis::X;
+    const int sin = in == Axis::X ? quadrant_sign_x(qq) : quadrant_sign_y(qq);
+    const int sout = out == Axis::X ? quadrant_sign_x(qq) : quadrant_sign_y(qq);
+    mb[at(base, arc::kPatterns + 2 * qq)] = pattern(in, -sin);
+    mb[at(base, arc::kPatterns + 2 * qq + 1)] = pattern(out, sout);
+  }
+  mb[at(base, arc::kPin)] = mb[at(base, arc::kPatterns + 2 * q)];
+  mb[at(base, arc::kPout)] = mb[at(base, arc::kPatterns + 2 * q + 1)];
+  return sm;
+}
+
+State decode(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Codes& codes, std::uint64_t pulses) {
+  const std::uint8_t base = sm.base;
+  const std::uint8_t mode = mb[at(base, kMode)];
+  State s;
+  s.pulses = pulses;
+  auto bad = [&](const std::string& why) {
+    return std::logic_error("sw8085: slot " + std::to_string(base) + " (" + describe(sm.move) + "): " + why +
+                            ", MODE = " + std::to_string(mode));
+  };
+  if (!sm.arc) {
+    bool neg;
+    if (mode == line::kModeNonNeg || mode == codes.lyo) neg = false;
+    else if (mode == line::kModeNeg) neg = true;
+    else if (mode == codes.fin_p) neg = false, s.done = true;
+    else throw bad("no line state has this MODE");
+    const std::int64_t d24 = get24(mb, at(base, line::kD));
+    s.d = neg ? d24 - (std::int64_t{1} << 24) : d24;
+    const std::int64_t rx = from_counter({mb[at(base, line::kRxl)],
+                                          static_cast<std::uint16_t>(mb[at(base, line::kRxh)] |
+                                                                     mb[at(base, line::kRxh + 1)] << 8)});
+    const std::int64_t ry = from_counter({mb[at(base, line::kRyl)],
+                                          static_cast<std::uint16_t>(mb[at(base, line::kRyh + 1)] |
+                                                                     mb[at(base, line::kRyh)] << 8)});
+    if (rx > sm.a || ry > sm.b) throw bad("distance left exceeds the move");
+    s.x = sm.sx * (sm.a - rx);
+    s.y = sm.sy * (sm.b - ry);
+    return s;
+  }
+  bool neg;
+  const std::uint8_t pos_codes[] = {codes.aix, codes.aiy, codes.eix, codes.eiy, codes.fixp,
+                                    codes.foyp, codes.fiyp, codes.foxp, codes.fin_p};
+  const std::uint8_t neg_codes[] = {codes.aoy, codes.aox, codes.eoy, codes.eox, codes.fixn,
+                                    codes.foyn, codes.fiyn, codes.foxn, codes.fin_n};
+  auto in = [mode](const auto& list) {
+    for (auto c : list)
+      if (c == mode) return true;
+    return false;
+  };
+  if (in(pos_codes)) neg = false;
+  else if (in(neg_codes)) neg = true;
+  else throw bad("no arc state has this MODE");
+  s.done = mode == codes.fin_p || mode == codes.fin_n;
+  const std::int64_t d24 = get24(mb, at(base, arc::kD));
+  const std::int64_t dp = neg ? d24 - (std::int64_t{1} << 24) : d24;
+  s.d = 2 * dp + (mb[at(base, arc::kPar)] & 1);
+  const int q = mb[at(base, arc::kQ)];
+  if (q > 3) throw bad("quadrant " + std::to_string(q) + " out of range");
+  s.quadrant = static_cast<std::uint8_t>(q);
+  s.crossings_left = mb[at(base, arc::kK)];
+  s.x = quadrant_sign_x(q) * std::int64_t{get24(mb, at(base, arc::kCx))};
+  s.y = quadrant_sign_y(q) * std::int64_t{get24(mb, at(base, arc::kCy))};
+  return s;
+}
+
+}  // namespace contour::sw8085

@@ -1,0 +1,114 @@
+// The mailbox of sw8085/interp/interp.a80: 256 bytes of RAM at 0x3000 that
+// the host and the 8085 share (docs/sw8085.md is the prose version; the
+// offsets here must equal the EQUs of interp.a80, which a test checks
+// against the assembler's listing).
+//
+// The host writes a move into one of two slots in the program's working
+// format (magnitudes, signs as OUT patterns, q, k, the distance counters and
+// D = 0), then marks the slot queued; the program starts it on the next
+// command pulse and works on it in place, so the slot IS the published
+// state after every pulse. The MODE byte at the slot's base is both the
+// program's dispatch code and the sign of D.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "interp/engine.hpp"
+#include "interp/types.hpp"
+
+namespace contour::sw8085 {
+
+// Board map (docs/board8085.md).
+inline constexpr std::uint16_t kRomEnd = 0x2000;
+inline constexpr std::uint16_t kRamBase = 0x2000, kRamEnd = 0x2800;
+inline constexpr std::uint16_t kMailbox = 0x3000, kMailboxEnd = 0x3100;
+inline constexpr std::uint8_t kPortStep = 0x10;   // OUT: bit0 X step, bit1 X dir, bit2 Y step, bit3 Y dir
+inline constexpr std::uint8_t kPortEdges = 0x11;  // IN: rising edges of the command input, mod 256
+inline constexpr std::uint8_t kPortDone = 0x12;   // OUT: a move finished (the slot base)
+
+// Header (offsets in the mailbox).
+inline constexpr std::uint8_t kIdleMode = 0x00;   // MODE of the idle pseudo-slot
+inline constexpr std::uint8_t kNext = 0x01;       // base of the slot the program starts next
+inline constexpr std::uint8_t kActive = 0x02;     // base of the slot started last (0: none)
+inline constexpr std::uint8_t kOverruns = 0x03;   // 3 bytes, little endian: command pulses lost
+inline constexpr std::uint8_t kReady = 0x06;      // kReadyMagic once initialised
+inline constexpr std::uint8_t kIdleCount = 0x08;  // 2 bytes: command pulses served with no move
+inline constexpr std::uint8_t kLayout = 0x0A;     // kLayoutVersion
+inline constexpr std::uint8_t kReadyMagic = 0x5A;
+inline constexpr std::uint8_t kLayoutVersion = 1;
+
+// Slots: a slot spans base-4 .. base+0x3B.
+inline constexpr std::array<std::uint8_t, 2> kSlots = {0x80, 0xC0};
+inline constexpr int kMode = 0x00;
+inline constexpr int kStatus = 0x3B;  // host: kQueued; program: kStarted
+inline constexpr std::uint8_t kQueued = 0x01, kStarted = 0x02;
+
+// Line slot: offsets from the base.
+namespace line {
+inline constexpr int kRyh = -4;  // 2 bytes at -4 (high), -3 (low): y left, high 16 bits, pre-borrowed
+inline constexpr int kPatY = -2;
+inline constexpr int kRyl = -1;
+inline constexpr int kD = 0x01;    // 3 bytes; sign in MODE (0xFF: D >= 0, 0x00: D < 0)
+inline constexpr int kRxl = 0x04;
+inline constexpr int kPatX = 0x05;
+inline constexpr int kRxh = 0x06;  // 2 bytes, little endian
+inline constexpr int kAxes = 0x08;
+inline constexpr int kNotB = 0x10;  // 3 bytes: ~|YE|
+inline constexpr int kA = 0x14;     // 3 bytes: |XE|
+inline constexpr std::uint8_t kModeNonNeg = 0xFF, kModeNeg = 0x00;
+}  // namespace line
+
+// Arc slot.
+namespace arc {
+inline constexpr int kPout = -2, kPin = -1;
+inline constexpr int kPar = 0x01;  // bit 0 = p: D = 2*D' + p
+inline constexpr int kD = 0x02;    // D', 3 bytes; sign from MODE
+inline constexpr int kCx = 0x05, kEx = 0x08, kCy = 0x0B, kEy = 0x0E;  // 3 bytes each
+inline constexpr int kQ = 0x11, kK = 0x12, kQstep = 0x13;
+inline constexpr int kPatterns = 0x14;  // PIN, POUT of quadrants 0..3
+}  // namespace arc
+
+// The MODE codes: assigned by the assembler (C_xxx in interp.a80), read from
+// its listing.
+struct Codes {
+  std::uint8_t idle, fin_p, fin_n, lyo;
+  std::uint8_t aix, aoy, aiy, aox, eix, eoy, eiy, eox;
+  std::uint8_t fixp, fixn, foyp, foyn, fiyp, fiyn, foxp, foxn;
+  // From the listing's symbol table; throws std::runtime_error naming a
+  // missing symbol.
+  static Codes from_symbols(const std::map<std::string, std::uint16_t>& symbols);
+};
+
+// OUT 10h pattern of a pulse on an axis in a direction.
+constexpr std::uint8_t pattern(Axis a, int sign) {
+  return a == Axis::X ? std::uint8_t(0x01 | (sign < 0 ? 0x02 : 0)) : std::uint8_t(0x04 | (sign < 0 ? 0x08 : 0));
+}
+
+// The pulse an OUT 10h value stands for; nothing if it is not exactly one
+// step bit.
+std::optional<Pulse> decode_pattern(std::uint8_t v);
+
+// What the host keeps about a queued move to decode its published state.
+struct SlotMove {
+  Move move;
+  std::uint8_t base = 0;
+  bool arc = false;
+  std::int8_t sx = 1, sy = 1;  // line: signs
+  std::int64_t a = 0, b = 0;   // line: |XE|, |YE|
+};
+
+// Writes `m` (already validated, not done at once) into the slot at `base`
+// of the mailbox, status not yet queued. Returns what decode() needs.
+SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<std::uint8_t, 256> mb);
+
+// The contract's observable state of the move in the slot, from the
+// mailbox bytes; `pulses` is the count the host observed. Throws
+// std::logic_error if the slot holds something no state maps to.
+State decode(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Codes& codes, std::uint64_t pulses);
+
+}  // namespace contour::sw8085
