@@ -2,6 +2,8 @@
 // pulse, on the ISS.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include "interp/engine.hpp"
 #include "sw8085/interp/host.hpp"
 
@@ -30,6 +32,51 @@ TEST(Program, PaperFig5Arc) {
   Host h;
   const Move m = Move::arc(6, 0, 0, 6, Sense::CCW);
   expect_same(m, h.run(m), run_model<24>(m));
+}
+
+}  // namespace
+}  // namespace contour::sw8085
+
+namespace contour::sw8085 {
+namespace {
+
+bool full_run() { return std::getenv("SW8085_FULL") != nullptr; }
+
+// Every line with |XE|, |YE| <= N (N = 12, 40 with SW8085_FULL=1).
+TEST(Program, AllSmallLines) {
+  Host h;
+  const int n = full_run() ? 40 : 12;
+  for (int xe = -n; xe <= n; ++xe)
+    for (int ye = -n; ye <= n; ++ye) {
+      const Move m = Move::line(xe, ye);
+      expect_same(m, h.run(m), run_model<24>(m));
+      if (HasFatalFailure()) return;
+    }
+}
+
+// Every accepted arc between points with |coordinates| <= N, both senses
+// (N = 5, 9 with SW8085_FULL=1): quadrant crossings, full circles, the end
+// rule in every quadrant.
+TEST(Program, AllSmallArcs) {
+  Host h;
+  const int n = full_run() ? 9 : 5;
+  int runs = 0;
+  for (int xs = -n; xs <= n; ++xs)
+    for (int ys = -n; ys <= n; ++ys)
+      for (int xe = -n - 1; xe <= n + 1; ++xe)
+        for (int ye = -n - 1; ye <= n + 1; ++ye)
+          for (Sense s : {Sense::CCW, Sense::CW}) {
+            const Move m = Move::arc(xs, ys, xe, ye, s);
+            try {
+              validate<24>(m);
+            } catch (const InputError&) {
+              continue;
+            }
+            expect_same(m, h.run(m), run_model<24>(m));
+            if (HasFatalFailure()) return;
+            ++runs;
+          }
+  EXPECT_GT(runs, 1000);
 }
 
 }  // namespace
