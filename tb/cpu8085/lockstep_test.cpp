@@ -32,7 +32,7 @@ std::uint64_t scale() {
 TEST(Lockstep, EveryOpcodeFromRandomStates) {
   std::mt19937_64 rng(85);
   for (int op = 0; op < 256; ++op) {
-    for (int rep = 0; rep < 24; ++rep) {
+    for (int rep = 0; rep < 16; ++rep) {
       std::array<std::uint8_t, 65536> mem{};
       for (auto& b : mem) b = static_cast<std::uint8_t>(rng());
       i8085::Regs r{};
@@ -56,16 +56,24 @@ TEST(Lockstep, EveryOpcodeFromRandomStates) {
   }
 }
 
-// A random 64 KiB memory run as code (HLT bytes replaced; HLT written by the
-// program itself still happens and is woken by TRAP), with every interrupt
+// A random 64 KiB memory run as code (most HLT bytes replaced; the HLTs that
+// remain are woken by the interrupts, TRAP at the latest), with every interrupt
 // input driven at random T-states: TRAP and RST 7.5 pulses, RST 6.5 / 5.5 and
 // INTR levels; INTR supplies RST n or CALL nnnn.
-void random_run(std::uint64_t seed, std::uint64_t steps) {
+// What the random runs went through, so that the test can insist that every
+// kind of step was in fact compared.
+struct Coverage {
+  std::array<std::uint64_t, 6> irq{};  // by i8085::Interrupt
+  std::uint64_t idle = 0, hlt = 0, intr_call = 0;
+  std::array<std::uint64_t, 256> op{};
+};
+
+void random_run(std::uint64_t seed, std::uint64_t steps, Coverage& cov) {
   std::mt19937_64 rng(seed);
   std::array<std::uint8_t, 65536> mem{};
   for (auto& b : mem) {
     b = static_cast<std::uint8_t>(rng());
-    if (b == 0x76) b = 0x00;
+    if (b == 0x76 && rng() % 8 != 0) b = 0x00;  // a few HLTs stay
   }
   std::string fst;
   if (const char* p = std::getenv("CPU8085_FST"); p != nullptr && seed == 1) fst = p;
@@ -75,6 +83,7 @@ void random_run(std::uint64_t seed, std::uint64_t steps) {
   });
   Pins pins;
   std::uint64_t next_change = 200;
+  std::uint64_t wake_at = 0;
   for (std::uint64_t i = 0; i < steps; ++i) {
     if (ls.tstates() >= next_change) {
       next_change = ls.tstates() + 20 + rng() % 1500;
@@ -96,17 +105,52 @@ void random_run(std::uint64_t seed, std::uint64_t steps) {
         }
         default: break;
       }
-      // A halted CPU with interrupts off waits for TRAP.
-      if (ls.halted() && rng() % 4 == 0) pins.trap = !pins.trap;
+      ls.set_pins(pins);
+    }
+    // A halted CPU may have interrupts off: a TRAP edge wakes it within 300 T.
+    if (ls.halted() && ls.last().kind != i8085::StepKind::idle) {
+      wake_at = ls.tstates() + rng() % 300;
+      pins.trap = false;
+      ls.set_pins(pins);
+    } else if (ls.halted() && ls.tstates() >= wake_at) {
+      pins.trap = true;
       ls.set_pins(pins);
     }
     ASSERT_TRUE(ls.step()) << "seed " << seed << "\n" << ls.report();
+    const i8085::Step& s = ls.last();
+    switch (s.kind) {
+      case i8085::StepKind::instruction:
+        ++cov.op[s.bytes[0]];
+        break;
+      case i8085::StepKind::interrupt:
+        ++cov.irq[static_cast<std::size_t>(s.irq)];
+        if (s.irq == i8085::Interrupt::intr && s.bytes[0] == 0xCD) ++cov.intr_call;
+        break;
+      case i8085::StepKind::idle:
+        ++cov.idle;
+        break;
+    }
   }
 }
 
 TEST(Lockstep, RandomStreamsWithInterrupts) {
   const std::uint64_t n = 4 * scale();
-  for (std::uint64_t seed = 1; seed <= n; ++seed) random_run(seed, 250000);
+  Coverage cov;
+  for (std::uint64_t seed = 1; seed <= n; ++seed) random_run(seed, 250000, cov);
+  for (int op = 0; op < 256; ++op) {
+    if (op == 0x76) continue;  // HLT: only where the program wrote it
+    EXPECT_GT(cov.op[static_cast<std::size_t>(op)], 0u) << "opcode " << op << " never ran";
+  }
+  const char* names[] = {"none", "TRAP", "RST 7.5", "RST 6.5", "RST 5.5", "INTR"};
+  for (std::size_t i = 1; i < cov.irq.size(); ++i)
+    EXPECT_GT(cov.irq[i], 0u) << names[i] << " was never acknowledged";
+  EXPECT_GT(cov.intr_call, 0u) << "INTR with CALL never happened";
+  std::printf("  acknowledged: TRAP %llu, RST 7.5 %llu, RST 6.5 %llu, RST 5.5 %llu, INTR %llu (CALL %llu);"
+              " HLT %llu, idle T-states %llu\n",
+              static_cast<unsigned long long>(cov.irq[1]), static_cast<unsigned long long>(cov.irq[2]),
+              static_cast<unsigned long long>(cov.irq[3]), static_cast<unsigned long long>(cov.irq[4]),
+              static_cast<unsigned long long>(cov.irq[5]), static_cast<unsigned long long>(cov.intr_call),
+              static_cast<unsigned long long>(cov.op[0x76]), static_cast<unsigned long long>(cov.idle));
 }
 
 // Every assembled sw8085 program (the .hex files under the build tree's
