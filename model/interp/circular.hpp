@@ -118,62 +118,50 @@ class Circular {
   Circular(std::int64_t xs, std::int64_t ys, std::int64_t xe, std::int64_t ye, Sense s) : sense_(s) {
     const Plan p = validate(xs, ys, xe, ye, s);
     r2_ = p.r2;
-    q_ = p.q_start;
     k_ = p.crossings;
-    ax_ = abs64(xs);
-    ay_ = abs64(ys);
-    ex_ = abs64(xe);
-    ey_ = abs64(ye);
+    mag_[0] = abs64(xs);
+    mag_[1] = abs64(ys);
+    end_[0] = abs64(xe);
+    end_[1] = abs64(ye);
+    enter_quadrant(p.q_start);
+  }
+
+  // Copies rebind the cached pointers into the copy's own registers.
+  Circular(const Circular& o) { *this = o; }
+  Circular& operator=(const Circular& o) {
+    sense_ = o.sense_;
+    r2_ = o.r2_;
+    k_ = o.k_;
+    mag_[0] = o.mag_[0];
+    mag_[1] = o.mag_[1];
+    end_[0] = o.end_[0];
+    end_[1] = o.end_[1];
+    d_ = o.d_;
+    n_ = o.n_;
+    enter_quadrant(o.q_);
+    return *this;
   }
 
   // One command pulse. Returns the output pulse, or nothing once done.
+  // The common case (k > 0: not yet in the end quadrant) is kept short; the
+  // end quadrant, with its end-point rule, is step_end_quadrant().
   std::optional<Pulse> step() {
-    if (done_) return std::nullopt;
-    const bool ix = inward_is_x(q_, sense_);
-    std::int64_t& in = ix ? ax_ : ay_;
-    std::int64_t& out = ix ? ay_ : ax_;
-    // Outside or on the circle (D >= 0) moves the inward axis, inside the
-    // outward one. In the end quadrant an axis with no distance left hands
-    // the pulse to the other.
-    bool inward = d_ >= 0;
-    if (k_ == 0) {
-      if (inward && in == (ix ? ex_ : ey_)) inward = false;
-      else if (!inward && out == (ix ? ey_ : ex_)) inward = true;
-    }
-    const Axis axis = (inward == ix) ? Axis::X : Axis::Y;
-    const std::int8_t qs = axis == Axis::X ? quadrant_sign_x(q_) : quadrant_sign_y(q_);
-    Pulse p{axis, static_cast<std::int8_t>(inward ? -qs : qs)};
-    if (inward) {
-      d_ -= 2 * in - 1;  // D - (2*|c|new + 1)
-      --in;
-      if (in == 0) {     // crossed onto the next quadrant
-        q_ = sense_ == Sense::CCW ? (q_ + 1) & 3 : (q_ + 3) & 3;
-        --k_;
-      }
-    } else {
-      d_ += 2 * out + 1;  // D + (2*|c|old + 1)
-      ++out;
-    }
-    ++n_;
-    if (!fits_signed(d_, kDBits)) throw OverflowError("circular: D = " + std::to_string(d_) + " overflows");
-    if (ax_ > kMax || ay_ > kMax || k_ < 0)
-      throw OverflowError("circular: coordinate or crossing count out of range: " + to_string(state()));
-    done_ = k_ == 0 && ax_ == ex_ && ay_ == ey_;
-    return p;
+    if (k_ <= 0) [[unlikely]] return step_end_quadrant();
+    return d_ >= 0 ? move_inward() : move_outward();
   }
 
-  bool done() const { return done_; }
+  bool done() const { return k_ < 0; }
   std::int64_t r2() const { return r2_; }
 
   State state() const {
     State s;
-    s.x = quadrant_sign_x(q_) * ax_;
-    s.y = quadrant_sign_y(q_) * ay_;
+    s.x = quadrant_sign_x(q_) * mag_[0];
+    s.y = quadrant_sign_y(q_) * mag_[1];
     s.d = d_;
     s.quadrant = static_cast<std::uint8_t>(q_);
-    s.crossings_left = static_cast<std::uint8_t>(k_);
+    s.crossings_left = static_cast<std::uint8_t>(k_ < 0 ? 0 : k_);
     s.pulses = n_;
-    s.done = done_;
+    s.done = k_ < 0;
     return s;
   }
 
@@ -185,15 +173,77 @@ class Circular {
                        "| must be <= 2^" + std::to_string(W) + " - 1 = " + std::to_string(kMax));
   }
 
-  Sense sense_;
+  static constexpr std::int64_t kDHalf = std::int64_t{1} << (kDBits - 1);  // D in [-kDHalf, kDHalf)
+
+  // D >= 0 (on or outside the circle): the inward axis, D -= 2|c|new + 1.
+  Pulse move_inward() {
+    const std::int64_t c = *in_;
+    d_ -= 2 * c - 1;
+    *in_ = c - 1;
+    const Pulse p = in_pulse_;
+    ++n_;
+    check_d();
+    if (c == 1) [[unlikely]] {  // landed on an axis: the next quadrant
+      if (k_ == 0) throw_overflow("circular: k (left the end quadrant)", state());
+      --k_;
+      enter_quadrant(sense_ == Sense::CCW ? (q_ + 1) & 3 : (q_ + 3) & 3);
+      if (k_ == 0 && mag_[0] == end_[0] && mag_[1] == end_[1]) k_ = -1;  // entered on the end point
+    }
+    return p;
+  }
+
+  // D < 0 (inside): the outward axis, D += 2|c|old + 1.
+  Pulse move_outward() {
+    const std::int64_t c = *out_;
+    d_ += 2 * c + 1;
+    *out_ = c + 1;
+    ++n_;
+    check_d();
+    if (c + 1 > kMax) [[unlikely]] throw_overflow("circular: |x| or |y|", state());
+    return out_pulse_;
+  }
+
+  void check_d() const {
+    if (static_cast<std::uint64_t>(d_ + kDHalf) >= 2 * static_cast<std::uint64_t>(kDHalf)) [[unlikely]]
+      throw_overflow("circular: D", state());
+  }
+
+  // k == 0: the end quadrant. An axis with no distance left hands the pulse
+  // to the other; done (k = -1) when both have arrived.
+  std::optional<Pulse> step_end_quadrant() {
+    if (k_ < 0) return std::nullopt;
+    const int in = in_ == &mag_[0] ? 0 : 1;
+    bool inward = d_ >= 0;
+    if (inward && mag_[in] == end_[in]) inward = false;
+    else if (!inward && mag_[in ^ 1] == end_[in ^ 1]) inward = true;
+    const Pulse p = inward ? move_inward() : move_outward();
+    if (mag_[0] == end_[0] && mag_[1] == end_[1]) k_ = -1;
+    return p;
+  }
+
+  // The roles of the axes are fixed within a quadrant: cache them.
+  void enter_quadrant(int q) {
+    q_ = q;
+    const int in = inward_is_x(q, sense_) ? 0 : 1;
+    in_ = &mag_[in];
+    out_ = &mag_[in ^ 1];
+    const std::int8_t sx = quadrant_sign_x(q), sy = quadrant_sign_y(q);
+    in_pulse_ = Pulse{static_cast<Axis>(in), static_cast<std::int8_t>(-(in == 0 ? sx : sy))};
+    out_pulse_ = Pulse{static_cast<Axis>(in ^ 1), in == 0 ? sy : sx};
+  }
+
+  Sense sense_ = Sense::CCW;
   std::int64_t r2_ = 0;
   int q_ = 0;
-  int k_ = 0;
-  std::int64_t ax_ = 0, ay_ = 0;  // |x|, |y|
-  std::int64_t ex_ = 0, ey_ = 0;  // |xe|, |ye|
+  int k_ = 0;                     // crossings left; -1 once done
+  std::int64_t mag_[2] = {0, 0};  // |x|, |y|
+  std::int64_t end_[2] = {0, 0};  // |xe|, |ye|
+  std::int64_t* in_ = &mag_[0];   // the inward axis' magnitude
+  std::int64_t* out_ = &mag_[1];  // the outward axis' magnitude
+  Pulse in_pulse_;                // the pulse an inward step emits here
+  Pulse out_pulse_;               // the pulse an outward step emits here
   std::int64_t d_ = 0;
   std::uint64_t n_ = 0;
-  bool done_ = false;
 };
 
 }  // namespace contour

@@ -150,3 +150,26 @@ TEST(Circular, RandomW24ArcsReachTheirEndsWithDInClosedForm) {
 
 }  // namespace
 }  // namespace contour
+
+namespace contour {
+namespace {
+
+TEST(Circular, ACopyStepsOnItsOwnRegisters) {
+  Circular<24> a(6, 0, 0, 6, Sense::CCW);
+  a.step();
+  Circular<24> b = a;  // copy mid-move
+  a.step();
+  a.step();
+  EXPECT_EQ(b.state().x, 5);
+  EXPECT_EQ(b.state().y, 0);
+  b.step();
+  EXPECT_EQ(b.state().y, 1) << "the copy moved, not the original";
+  EXPECT_EQ(a.state().y, 2);
+  b = a;
+  b.step();
+  EXPECT_EQ(a.state().y, 2);
+  EXPECT_EQ(b.state().y, 3);
+}
+
+}  // namespace
+}  // namespace contour

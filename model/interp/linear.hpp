@@ -57,7 +57,7 @@ class Linear {
       p = Pulse{Axis::Y, sy_};
     }
     ++n_;
-    if (!fits_signed(d_, kDBits)) throw OverflowError("linear: D = " + std::to_string(d_) + " overflows");
+    if (!fits_signed(d_, kDBits)) [[unlikely]] throw_overflow("linear: D", state());
     done_ = x_ == a_ && y_ == b_;
     return p;
   }

@@ -17,4 +17,8 @@ std::string to_string(const State& s) {
   return o.str();
 }
 
+void throw_overflow(const char* what, const State& s) {
+  throw OverflowError(std::string(what) + " overflows its width: " + to_string(s));
+}
+
 }  // namespace contour

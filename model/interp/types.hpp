@@ -49,6 +49,10 @@ class OverflowError : public std::logic_error {
   using std::logic_error::logic_error;
 };
 
+// Throws OverflowError naming the register and the state. Out of line and
+// cold, so that the checks cost the stepping code one compare each.
+[[noreturn]] [[gnu::cold]] [[gnu::noinline]] void throw_overflow(const char* what, const State& s);
+
 // Largest magnitude a W-bit register holds: 2^W - 1.
 constexpr std::int64_t max_magnitude(unsigned width) { return (std::int64_t{1} << width) - 1; }
 
