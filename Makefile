@@ -50,7 +50,8 @@ test: build
 
 bench: build
 	@$(CMAKE) --build $(BUILD) -j$(JOBS) --target benches
-	@model/bench/run.sh $(BUILD)
+	@$(BUILD)/model/bench/contour_bench
+	@$(BUILD)/model/bench/interp_ipp
 
 synth: deps
 	@$(MAKE) --no-print-directory -C rtl/synth BUILD=$(abspath $(BUILD))/synth
