@@ -113,7 +113,7 @@ SlotMove Host::queue(const Move& m) {
   validate<24>(m);
   const std::uint8_t base = kSlots[next_slot_];
   auto& held = slots_[next_slot_];
-  if (held && !done(*held))
+  if (!slot_free(next_slot_))
     throw std::logic_error("sw8085: slot " + std::to_string(base) + " still holds " + describe(held->move));
   auto mb = bus_.mailbox();
   SlotMove sm = encode(m, base, codes_, mb);
@@ -158,6 +158,13 @@ CommandResult Host::command() {
 State Host::state(const SlotMove& sm, std::uint64_t pulses) const {
   auto& self = const_cast<Host&>(*this);
   return decode(sm, self.bus_.mailbox(), codes_, pulses);
+}
+
+bool Host::slot_free(int i) const {
+  // A finished slot is free once the program has left it: it started the
+  // other slot, or went idle (MB_ACTIVE = 0).
+  const auto& held = slots_[i];
+  return !held || (done(*held) && bus_.mem[kMailbox + kActive] != held->base);
 }
 
 bool Host::done(const SlotMove& sm) const {
@@ -213,7 +220,7 @@ RunResult Host::run(const Move& m, std::vector<int>* tstates) {
   return r;
 }
 
-Host::Timed Host::drive(const std::vector<Move>& moves, double period) {
+Host::Timed Host::drive(const std::vector<Move>& moves, double period, std::vector<Pulse>* pulses) {
   Timed res;
   const std::uint32_t ovr0 = overruns();
   const std::uint16_t idle0 = idle_commands();
@@ -221,16 +228,24 @@ Host::Timed Host::drive(const std::vector<Move>& moves, double period) {
   std::optional<SlotMove> last;
   std::uint64_t bound = 0;
   for (const auto& m : moves) bound += pulse_bound(m);
-  auto slot_free = [&] {
-    const auto& held = slots_[next_slot_];
-    return !held || done(*held);
-  };
   auto feed = [&] {
-    while (next < moves.size() && slot_free()) {
+    while (next < moves.size() && slot_free(next_slot_)) {
       const Move& m = moves[next++];
       if (!m.is_arc() && m.xe == 0 && m.ye == 0) continue;
       last = queue(m);
     }
+  };
+  auto count = [&] {
+    for (const auto& w : bus_.outs)
+      if (w.port == kPortStep) {
+        ++res.pulses;
+        if (pulses) {
+          const auto p = decode_pattern(w.value);
+          if (!p) throw std::runtime_error("sw8085: OUT 10h with a bad step pattern " + std::to_string(w.value));
+          pulses->push_back(*p);
+        }
+      }
+    bus_.outs.clear();
   };
   feed();
   double next_t = static_cast<double>(machine_->tstates()) + period;
@@ -255,15 +270,22 @@ Host::Timed Host::drive(const std::vector<Move>& moves, double period) {
       machine_->set_rst75(false);
       raised = false;
     }
-    for (const auto& w : bus_.outs)
-      if (w.port == kPortStep) ++res.pulses;
-    bus_.outs.clear();
+    count();
   }
-  // Let the routine that is running finish, so that the counts are final.
-  for (int n = 0; n < 100000 && machine_->regs().sp != sp_idle_; ++n) step_checked();
+  // The last routine finishes (its MODE says done before its OUT), and a
+  // command still in the latch is served.
+  settle();
+  count();
   res.overruns = overruns() - ovr0;
   res.idle_commands = static_cast<std::uint16_t>(idle_commands() - idle0);
   return res;
+}
+
+void Host::settle() {
+  for (int n = 0; !(machine_->halted() && machine_->regs().sp == sp_idle_); ++n) {
+    if (n > 1000000) throw std::runtime_error("sw8085: the program does not settle in its idle loop");
+    step_checked();
+  }
 }
 
 RunResult ProgramEngine::run(const Move& m) {

@@ -78,6 +78,8 @@ class Host {
   // The observable state of a queued move, from the mailbox.
   State state(const SlotMove& sm, std::uint64_t pulses) const;
   bool done(const SlotMove& sm) const;
+  // Whether queue() may write slot i (0 or 1) now.
+  bool slot_free(int i) const;
 
   // Runs a move to its end, one command pulse at a time (the Engine seam).
   RunResult run(const Move& m, std::vector<int>* tstates = nullptr);
@@ -89,10 +91,12 @@ class Host {
     std::uint64_t commands = 0, pulses = 0, overruns = 0, idle_commands = 0;
     bool all_done = false;
   };
-  Timed drive(const std::vector<Move>& moves, double period);
+  Timed drive(const std::vector<Move>& moves, double period, std::vector<Pulse>* pulses = nullptr);
 
   std::uint32_t overruns() const;
   std::uint16_t idle_commands() const;
+  // Runs the CPU until it halts in its idle loop with nothing pending.
+  void settle();
   i8085::Machine& machine() { return *machine_; }
   BoardBus& bus() { return bus_; }
   const Codes& codes() const { return codes_; }

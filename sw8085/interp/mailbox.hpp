@@ -34,7 +34,7 @@ inline constexpr std::uint8_t kPortDone = 0x12;   // OUT: a move finished (the s
 // Header (offsets in the mailbox).
 inline constexpr std::uint8_t kIdleMode = 0x00;   // MODE of the idle pseudo-slot
 inline constexpr std::uint8_t kNext = 0x01;       // base of the slot the program starts next
-inline constexpr std::uint8_t kActive = 0x02;     // base of the slot started last (0: none)
+inline constexpr std::uint8_t kActive = 0x02;     // base of the slot in use (0: idle, none)
 inline constexpr std::uint8_t kOverruns = 0x03;   // 3 bytes, little endian: command pulses lost
 inline constexpr std::uint8_t kReady = 0x06;      // kReadyMagic once initialised
 inline constexpr std::uint8_t kIdleCount = 0x08;  // 2 bytes: command pulses served with no move
