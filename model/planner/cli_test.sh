@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# `contour gcode` end to end: paper B's program, outputs, and every CLI error
+# (exit status 2, exactly one line on stderr naming the problem).
+set -uo pipefail
+contour=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fails=0 passes=0
+ok() { passes=$((passes + 1)); }
+bad() { echo "FAIL: $*"; fails=$((fails + 1)); }
+
+printf 'G00X50.Y0.Z0.\nG03X0.Y-47.246Z-16.366I-50J0.K0.F6000\nG00X0.Y0.Z0.\n' > "$work/paperb.ngc"
+printf 'G1 X1 Y2 Z-3 F600\n' > "$work/line.ngc"
+
+# Paper B: the arc block (segment 2) takes 2.46 s; all limits respected.
+json=$("$contour" gcode "$work/paperb.ngc" --format json) || bad "paper B json exit $?"
+arc_t=$(echo "$json" | sed 's/.*"kind": "3D arc", [^}]*"time_s": \([0-9.]*\).*/\1/')
+awk -v t="$arc_t" 'BEGIN { exit !(t >= 2.45 && t <= 2.47) }' && ok || bad "3D arc time '$arc_t' is not 2.46 +- 0.01"
+echo "$json" | grep -q '"total_time_s": [0-9]' && ok || bad "no total_time_s"
+echo "$json" | grep -q '"all_ok": true' && ok || bad "limits not all respected: $json"
+
+# The full circle: 100 pi mm at 100 mm/s plus one acceleration time.
+printf 'G0 X50\nG03X50.Y0.I-50.J0.F6000\n' > "$work/circle.ngc"
+t=$("$contour" gcode "$work/circle.ngc" --format json | sed 's/.*"kind": "full circle", [^}]*"time_s": \([0-9.]*\).*/\1/')
+awk -v t="$t" 'BEGIN { exit !(t >= 3.23 && t <= 3.26) }' && ok || bad "full circle time '$t'"
+
+# Summary text names every limit.
+sum=$("$contour" gcode "$work/paperb.ngc" --tol 0.05 --chord b --cycle 2 --accel 1764000)
+for w in "total time" "peak feed" "max chord err" "chord method b" "tolerance 0.05 um" "of 2 ms" "1764000"; do
+  echo "$sum" | grep -q "$w" && ok || bad "summary lacks '$w'"
+done
+
+# CSV: header and one row per cycle plus the start.
+"$contour" gcode "$work/paperb.ngc" --csv "$work/p.csv" > /dev/null || bad "csv exit"
+head -1 "$work/p.csv" | grep -qx 't_s,x_mm,y_mm,z_mm,feed_mm_min,vx_mm_min,vy_mm_min,vz_mm_min' && ok || bad "csv header"
+cycles=$(echo "$json" | sed 's/.*"cycles": \([0-9]*\).*/\1/')
+[ "$(wc -l < "$work/p.csv")" -eq $((cycles + 2)) ] && ok || bad "csv rows $(wc -l < "$work/p.csv") for $cycles cycles"
+
+# SVG: the five plots, each with a title and axis labels.
+"$contour" gcode "$work/paperb.ngc" --svg "$work/svg" > /dev/null || bad "svg exit"
+for f in velocity xy yz zx uv-line2; do
+  grep -q '<svg' "$work/svg/$f.svg" && grep -q '(mm' "$work/svg/$f.svg" && ok || bad "svg $f"
+done
+
+# Pulses: 1000 steps per mm, every step once, in time order.
+"$contour" gcode "$work/line.ngc" --pulses --steps-per-mm 1000 --engine model > "$work/pulses.txt" || bad "pulses exit"
+[ "$(grep -c ' +X$' "$work/pulses.txt")" -eq 1000 ] && [ "$(grep -c ' +Y$' "$work/pulses.txt")" -eq 2000 ] &&
+  [ "$(grep -c ' -Z$' "$work/pulses.txt")" -eq 3000 ] && [ "$(wc -l < "$work/pulses.txt")" -eq 6000 ] && ok ||
+  bad "pulse counts"
+sort -s -g -k1,1 -c "$work/pulses.txt" && ok || bad "pulses not in time order"
+
+# Errors: exit 2, one line on stderr, naming the problem.
+printf 'G1 X1 F10\nG2 X10.04 Y0 I5 J0\n' > "$work/radius.ngc"
+printf 'G1 X1 F10\nG1 M3\n' > "$work/word.ngc"
+printf 'vmax_x = 6000\nspeed = 3\n' > "$work/bad.cfg"
+printf 'amax_x = -1\n' > "$work/neg.cfg"
+expect_error() {  # want-substring args...
+  local want=$1
+  shift
+  "$contour" gcode "$@" > "$work/out" 2> "$work/err"
+  local rc=$?
+  if [ $rc -ne 2 ]; then bad "exit $rc (want 2) for: $*"; return; fi
+  if [ "$(wc -l < "$work/err")" -ne 1 ]; then bad "stderr is not one line for: $*: $(cat "$work/err")"; return; fi
+  grep -qF -- "$want" "$work/err" && ok || bad "stderr '$(cat "$work/err")' lacks '$want'"
+}
+expect_error "cannot read '$work/none.ngc'" "$work/none.ngc"
+expect_error "missing argument FILE"
+expect_error "radius.ngc: line 2, column 1: radius to end of arc differs from radius to start: r1=5.0000 mm r2=4.0400 mm" "$work/radius.ngc"
+expect_error "word.ngc: line 2, column 4: unsupported word 'M'" "$work/word.ngc"
+expect_error "--chord: unknown placement 'd'" "$work/line.ngc" --chord d
+expect_error "--tol: must be > 0" "$work/line.ngc" --tol 0
+expect_error "--cycle: 'fast' is not a number" "$work/line.ngc" --cycle fast
+expect_error "--accel: must be > 0" "$work/line.ngc" --accel 0
+expect_error "--format: unknown format 'xml'" "$work/line.ngc" --format xml
+expect_error "bad.cfg:2: unknown key 'speed'" "$work/line.ngc" --config "$work/bad.cfg"
+expect_error "neg.cfg:1: amax_x" "$work/line.ngc" --config "$work/neg.cfg"
+expect_error "--config: cannot read" "$work/line.ngc" --config "$work/none.cfg"
+expect_error "--engine needs --pulses" "$work/line.ngc" --engine model
+expect_error "--steps-per-mm needs --pulses" "$work/line.ngc" --steps-per-mm 10
+expect_error "--engine: unknown engine 'nope'" "$work/line.ngc" --pulses --engine nope
+expect_error "--steps-per-mm: must be > 0" "$work/line.ngc" --pulses --steps-per-mm 0
+expect_error "does not combine" "$work/line.ngc" --pulses --csv "$work/x.csv"
+expect_error "unknown option '--bogus'" "$work/line.ngc" --bogus
+
+echo "cli: $passes passed, $fails failed"
+[ "$fails" -eq 0 ]
