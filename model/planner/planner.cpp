@@ -240,7 +240,7 @@ Plan plan(const std::vector<gcode::Block>& blocks, const Config& config) {
   return p;
 }
 
-Interpolator::Interpolator(const Plan& plan) : plan_(plan) {
+Interpolator::Interpolator(const Plan& plan) : plan_(&plan) {
   const double T = plan.config.cycle_s;
   cycles_ = plan.segs.empty() ? 0 : static_cast<std::size_t>(std::ceil(plan.total_time / T - 1e-9));
   if (!plan.segs.empty() && cycles_ == 0) cycles_ = 1;
@@ -248,28 +248,28 @@ Interpolator::Interpolator(const Plan& plan) : plan_(plan) {
 
 Sample Interpolator::at(std::size_t n) {
   Sample out;
-  const double T = plan_.config.cycle_s;
+  const double T = plan_->config.cycle_s;
   out.t = static_cast<double>(n) * T;
   if (n >= cycles_) {
-    out.seg = static_cast<int>(plan_.segs.size()) - 1;
-    const auto& last = plan_.segs.back();
+    out.seg = static_cast<int>(plan_->segs.size()) - 1;
+    const auto& last = plan_->segs.back();
     out.s = last.geom.length;
     out.p = last.geom.end;
     return out;
   }
-  while (seg_ + 1 < plan_.segs.size() && out.t >= plan_.segs[seg_ + 1].t_begin) ++seg_;
-  const PlannedSegment& s = plan_.segs[seg_];
+  while (seg_ + 1 < plan_->segs.size() && out.t >= plan_->segs[seg_ + 1].t_begin) ++seg_;
+  const PlannedSegment& s = plan_->segs[seg_];
   const double tl = out.t - s.t_begin;
   out.seg = static_cast<int>(seg_);
   out.s = s.s_at(tl);
   out.v = s.v_at(tl);
-  const double e = s.geom.kind == Segment::Kind::Arc ? vertex_offset(plan_.config.chord, s.rho, out.v * T) : 0;
+  const double e = s.geom.kind == Segment::Kind::Arc ? vertex_offset(plan_->config.chord, s.rho, out.v * T) : 0;
   out.p = s.geom.point(out.s, e);
   return out;
 }
 
 bool Interpolator::next(Sample& out) {
-  if (plan_.segs.empty() || n_ > cycles_) return false;
+  if (plan_->segs.empty() || n_ > cycles_) return false;
   out = at(n_++);
   return true;
 }

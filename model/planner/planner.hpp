@@ -125,7 +125,7 @@ class Interpolator {
 
  private:
   Sample at(std::size_t n);
-  const Plan& plan_;
+  const Plan* plan_;
   std::size_t n_ = 0, cycles_ = 0, seg_ = 0;
 };
 
