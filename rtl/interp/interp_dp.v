@@ -1,0 +1,356 @@
+// interp_dp: the interpolation datapath of paper A, one step per clock.
+//
+// Executes the contract of docs/algorithm.md ("Linear", "Circular") on a
+// block prepared by blk_prep. Both kinds share one recurrence
+//
+//     inward step:  D <- D - SUB        outward step:  D <- D + ADD
+//
+//   line:   inward = X, SUB = B = |Ye|, ADD = A = |Xe| (constants);
+//           ci = x travelled (counts up), co = y travelled (counts up).
+//   circle: SUB = 2|c_in| - 1, ADD = 2|c_out| + 1 (kept in registers so the
+//           loop holds a single add); ci = |c_in| (counts down),
+//           co = |c_out| (counts up); ci and co swap roles when ci reaches 0
+//           (a quadrant crossing).
+//
+// The end-point rule needs "no distance left" on either axis. Those tests
+// (ci == ti, co == to) and the ones that tell whether the next step ends the
+// move are kept as registered flags, each updated from a comparison of the
+// current registers with a per-move constant (ti1, ti2, tim1, to2), so
+// no wide comparator sits in the D loop. `ifdef FORMAL` asserts that every
+// flag equals the comparison it stands for.
+//
+// A block is loaded when the datapath is idle, or in the very clock that
+// issues the last pulse of the running move: consecutive blocks run back to
+// back with no idle clock.
+//
+// Reset: synchronous, active high; it abandons the running move.
+`default_nettype none
+
+module interp_dp #(
+    parameter integer W = 24  // coordinate magnitude width (2..30)
+) (
+    input  wire           i_clk,
+    input  wire           i_rst,
+    // Command: one interpolation step in every clock where it is high.
+    input  wire           i_cmd,
+    // Prepared block (blk_prep), valid/ready handshake.
+    input  wire           i_valid,
+    output wire           o_ready,       // block is taken in this clock
+    input  wire           i_arc,
+    input  wire           i_cw,
+    input  wire           i_sxn,         // line: X runs negative
+    input  wire           i_syn,         // line: Y runs negative
+    input  wire [1:0]     i_q,
+    input  wire [2:0]     i_k,
+    input  wire [W-1:0]   i_ci,
+    input  wire [W-1:0]   i_co,
+    input  wire [W:0]     i_sub,
+    input  wire [W:0]     i_add,
+    input  wire [W+1:0]   i_ti1,
+    input  wire [W+1:0]   i_ti2,
+    input  wire [W+1:0]   i_tim1,
+    input  wire [W+1:0]   i_to2,
+    input  wire [7:0]     i_flags,       // see blk_prep: F_* bit order
+    // Output pulse, registered: valid in the clock after the step, together
+    // with the state after it.
+    output reg            o_pulse,
+    output reg            o_pulse_y,     // 0: X, 1: Y
+    output reg            o_pulse_neg,   // 1: minus direction
+    output reg            o_pulse_last,  // the pulse that ended its move
+    // Observable state (docs/algorithm.md, "Observable state").
+    output wire           o_busy,        // a move is loaded and not done
+    output wire [W-1:0]   o_xmag,
+    output wire           o_xneg,
+    output wire [W-1:0]   o_ymag,
+    output wire           o_yneg,
+    output wire [W+1:0]   o_d,
+    output wire [1:0]     o_q,
+    output wire [2:0]     o_k,
+    output wire           o_arc
+);
+
+  // Flag bit order of i_flags (blk_prep builds it the same way).
+  localparam integer F_IN_EX   = 0;  // ci == ti: inward axis has no distance left
+  localparam integer F_OUT_EX  = 1;  // co == to: outward axis has no distance left
+  localparam integer F_IN_ONE  = 2;  // ci == ti1: one inward step left
+  localparam integer F_OUT_ONE = 3;  // co == to - 1: one outward step left
+  localparam integer F_CI_ONE  = 4;  // ci == 1 (arc): an inward step crosses
+  localparam integer F_CO_TI   = 5;  // co == ti (arc): a crossing lands on ti
+  localparam integer F_TO_Z    = 6;  // to == 0 (constant per move)
+  localparam integer F_TO_ONE  = 7;  // to == 1 (constant per move)
+
+  // ---------------------------------------------------------------- state
+  reg           arc_q, cw_q, sxn_q, syn_q;
+  reg [1:0]     q_q;
+  reg [2:0]     k_q;
+  reg [W+1:0]   d_q;
+  reg [W:0]     sub_q, add_q;
+  reg [W-1:0]   ci_q, co_q;
+  reg [W+1:0]   ti1_q, ti2_q, tim1_q, to2_q;
+  reg           in_ex_q, out_ex_q, in_one_q, out_one_q, ci_one_q, co_ti_q;
+  reg           to_z_q, to_one_q;
+
+  // ------------------------------------------------------------ decisions
+  wire kz = (k_q == 3'd0);
+  wire k1 = (k_q == 3'd1);
+  wire d_pos = ~d_q[W+1];                 // D >= 0
+  wire done = kz & in_ex_q & out_ex_q;
+  wire busy = ~done;
+  wire st = i_cmd & busy;                  // a step happens in this clock
+
+  // D >= 0 chooses the inward axis; in the end quadrant an axis with no
+  // distance left hands the pulse to the other one.
+  wire inw = kz ? (d_pos ? ~in_ex_q : out_ex_q) : d_pos;
+  // An inward step from ci == 1 crosses onto the next quadrant (arcs only;
+  // in the end quadrant ci never falls below ti >= 1).
+  wire xing = arc_q & ~kz & ci_one_q;
+
+  // Would this step end the move?
+  wire last_in = (k1 & arc_q & ci_one_q & co_ti_q & to_z_q) | (kz & in_one_q & out_ex_q);
+  wire last_out = kz & in_ex_q & out_one_q;
+  wire last = inw ? last_in : last_out;
+
+  wire ld = i_valid & (done | (st & last));
+  assign o_ready = ld;
+
+  // Axis of the inward step: X for a line; for an arc X when the quadrant
+  // is even XOR clockwise.
+  wire in_is_x = arc_q ? (~q_q[0] ^ cw_q) : 1'b1;
+  wire pulse_x = (inw == in_is_x);
+  // Quadrant signs (Q1..Q4 = 0..3): x < 0 in Q2, Q3; y < 0 in Q3, Q4.
+  wire qxn = q_q[0] ^ q_q[1];
+  wire qyn = q_q[1];
+  // Line: the axis sign. Arc: inward runs against the quadrant sign,
+  // outward with it.
+  wire pulse_neg = arc_q ? ((pulse_x ? qxn : qyn) ^ inw) : (pulse_x ? sxn_q : syn_q);
+
+  // ------------------------------------------------------- next values
+  wire [W:0] two = {{(W-1){1'b0}}, 2'b10};
+  wire [W+1:0] d_in = d_q - {1'b0, sub_q};
+  wire [W+1:0] d_out = d_q + {1'b0, add_q};
+  wire [W-1:0] ci_step = arc_q ? ci_q - 1'b1 : ci_q + 1'b1;
+
+  // Comparisons of the current registers with per-move constants; they
+  // feed only flag registers.
+  wire [W+1:0] ci_x = {2'b00, ci_q};
+  wire [W+1:0] co_x = {2'b00, co_q};
+  wire c_ci_ti2 = (ci_x == ti2_q);
+  wire c_co_ti1 = (co_x == ti1_q);
+  wire c_co_to2 = (co_x == to2_q);
+  wire c_co_tim1 = (co_x == tim1_q);
+  wire c_ci_two = (ci_q == 2);
+  wire c_co_one = (co_q == 1);
+  // ti == 0 is co == ti right after a crossing (co = 0): ti = tim1 + 1.
+  wire ti_z = (tim1_q == {(W+2){1'b1}});
+
+  // D: cleared by a load, else one add per step.
+  always @(posedge i_clk) begin
+    if (i_rst | ld) d_q <= {(W+2){1'b0}};
+    else if (st) d_q <= inw ? d_in : d_out;
+  end
+
+  // SUB = 2|c_in| - 1 (arc) / B (line).
+  always @(posedge i_clk) begin
+    if (ld) sub_q <= i_sub;
+    else if (st & inw & arc_q) sub_q <= xing ? add_q - two : sub_q - two;
+  end
+
+  // ADD = 2|c_out| + 1 (arc) / A (line).
+  always @(posedge i_clk) begin
+    if (ld) add_q <= i_add;
+    else if (st & arc_q) add_q <= inw ? (xing ? {{W{1'b0}}, 1'b1} : add_q) : add_q + two;
+  end
+
+  // ci: inward-axis magnitude; takes co's value at a crossing.
+  always @(posedge i_clk) begin
+    if (ld) ci_q <= i_ci;
+    else if (st & inw) ci_q <= xing ? co_q : ci_step;
+  end
+
+  // co: outward-axis magnitude; 0 after a crossing.
+  always @(posedge i_clk) begin
+    if (ld) co_q <= i_co;
+    else if (st & inw & xing) co_q <= {W{1'b0}};
+    else if (st & ~inw) co_q <= co_q + 1'b1;
+  end
+
+  // Quadrant and crossings left; k = 0 with both axes exhausted is "done",
+  // which is also the reset state.
+  always @(posedge i_clk) begin
+    if (i_rst) begin
+      q_q <= 2'd0;
+      k_q <= 3'd0;
+    end else if (ld) begin
+      q_q <= i_q;
+      k_q <= i_k;
+    end else if (st & inw & xing) begin
+      q_q <= cw_q ? q_q - 1'b1 : q_q + 1'b1;
+      k_q <= k_q - 1'b1;
+    end
+  end
+
+  // Move constants.
+  always @(posedge i_clk) begin
+    if (ld) begin
+      arc_q <= i_arc;
+      cw_q <= i_cw;
+      sxn_q <= i_sxn;
+      syn_q <= i_syn;
+      ti1_q <= i_ti1;
+      ti2_q <= i_ti2;
+      tim1_q <= i_tim1;
+      to2_q <= i_to2;
+      to_z_q <= i_flags[F_TO_Z];
+      to_one_q <= i_flags[F_TO_ONE];
+    end
+  end
+
+  // Inward-axis flags: change on inward steps only.
+  always @(posedge i_clk) begin
+    if (i_rst) begin
+      in_ex_q <= 1'b1;
+      in_one_q <= 1'b0;
+      ci_one_q <= 1'b0;
+    end else if (ld) begin
+      in_ex_q <= i_flags[F_IN_EX];
+      in_one_q <= i_flags[F_IN_ONE];
+      ci_one_q <= i_flags[F_CI_ONE];
+    end else if (st & inw) begin
+      in_ex_q <= xing ? co_ti_q : in_one_q;
+      in_one_q <= xing ? c_co_ti1 : c_ci_ti2;
+      ci_one_q <= arc_q & (xing ? c_co_one : c_ci_two);
+    end
+  end
+
+  // Outward-axis flags: change on outward steps and at crossings.
+  always @(posedge i_clk) begin
+    if (i_rst) begin
+      out_ex_q <= 1'b1;
+      out_one_q <= 1'b0;
+      co_ti_q <= 1'b0;
+    end else if (ld) begin
+      out_ex_q <= i_flags[F_OUT_EX];
+      out_one_q <= i_flags[F_OUT_ONE];
+      co_ti_q <= i_flags[F_CO_TI];
+    end else if (st & ~inw) begin
+      out_ex_q <= out_one_q;
+      out_one_q <= c_co_to2;
+      co_ti_q <= c_co_tim1;
+    end else if (st & xing) begin
+      out_ex_q <= to_z_q;
+      out_one_q <= to_one_q;
+      co_ti_q <= ti_z;
+    end
+  end
+
+  // Output pulse, aligned with the state after the step.
+  always @(posedge i_clk) begin
+    if (i_rst) begin
+      o_pulse <= 1'b0;
+      o_pulse_y <= 1'b0;
+      o_pulse_neg <= 1'b0;
+      o_pulse_last <= 1'b0;
+    end else begin
+      o_pulse <= st;
+      o_pulse_y <= ~pulse_x;
+      o_pulse_neg <= pulse_neg;
+      o_pulse_last <= st & last;
+    end
+  end
+
+  // ------------------------------------------------------ observable state
+  wire in_x_now = arc_q ? (~q_q[0] ^ cw_q) : 1'b1;
+  assign o_busy = busy;
+  assign o_xmag = in_x_now ? ci_q : co_q;
+  assign o_ymag = in_x_now ? co_q : ci_q;
+  assign o_xneg = arc_q ? qxn : sxn_q;
+  assign o_yneg = arc_q ? qyn : syn_q;
+  assign o_d = d_q;
+  assign o_q = q_q;
+  assign o_k = k_q;
+  assign o_arc = arc_q;
+
+`ifdef FORMAL
+  // ------------------------------------------------------------- formal
+  // Reference values the flags stand for, and the exact discriminant.
+  reg [W+1:0] ti_f, to_f;      // targets: ti = ti1 + (arc ? -1 : +1)
+  reg [2*W+3:0] r2_f;          // arc: R^2
+  reg [W+3:0] n_f;             // pulses since the load
+  reg past_valid_f;
+  initial past_valid_f = 1'b0;
+  always @(posedge i_clk) past_valid_f <= 1'b1;
+
+  always @(posedge i_clk) begin
+    if (ld) begin
+      ti_f <= i_arc ? i_ti1 - 1'b1 : i_ti1 + 1'b1;
+      to_f <= i_to2 + 2'd2;
+      r2_f <= {{(W+4){1'b0}}, i_ci} * {{(W+4){1'b0}}, i_ci} + {{(W+4){1'b0}}, i_co} * {{(W+4){1'b0}}, i_co};
+      n_f <= {(W+4){1'b0}};
+    end else if (st) begin
+      n_f <= n_f + 1'b1;
+    end
+  end
+
+  wire signed [2*W+5:0] ci_s = $signed({{(W+6){1'b0}}, ci_q});
+  wire signed [2*W+5:0] co_s = $signed({{(W+6){1'b0}}, co_q});
+  wire signed [2*W+5:0] d_s = {{W{d_q[W+1]}}, d_q};
+  wire signed [2*W+5:0] sub_s = $signed({{(W+5){1'b0}}, sub_q});
+  wire signed [2*W+5:0] add_s = $signed({{(W+5){1'b0}}, add_q});
+  wire signed [2*W+5:0] r2_s = $signed({2'b00, r2_f});
+
+  // `loaded_f`: a block has been loaded since reset (before, the
+  // registers other than the flags hold no move).
+  reg loaded_f;
+  initial loaded_f = 1'b0;
+  always @(posedge i_clk) begin
+    if (i_rst) loaded_f <= 1'b0;
+    else if (ld) loaded_f <= 1'b1;
+  end
+
+  always @(*) begin
+    if (past_valid_f && loaded_f && !i_rst) begin
+      // Flags equal the comparisons they stand for.
+      assert(in_ex_q == ({2'b00, ci_q} == ti_f));
+      assert(out_ex_q == ({2'b00, co_q} == to_f));
+      assert(in_one_q == ({2'b00, ci_q} == ti1_q));
+      assert(out_one_q == ({2'b00, co_q} == to_f - 1'b1));
+      assert(ti2_q == (arc_q ? ti_f + 2'd2 : ti_f - 2'd2));
+      assert(tim1_q == ti_f - 1'b1);
+      assert(to_z_q == (to_f == 0) && to_one_q == (to_f == 1));
+      assert(k_q <= 3'd4);
+      if (!arc_q) begin
+        // Line: D = A*y - B*x, within [-B, A] (D < A unless A = 0), and
+        // the distance travelled never passes the end point.
+        assert(k_q == 3'd0);
+        assert(d_s == add_s * co_s - sub_s * ci_s);
+        assert(d_s >= -sub_s && d_s <= add_s);
+        assert({2'b00, ci_q} <= ti_f && {2'b00, co_q} <= to_f);
+        assert(ti_f == {1'b0, add_q} && to_f == {1'b0, sub_q});
+        // Done within the pulse count: every pulse is one unit of A + B.
+        assert({{4{1'b0}}, ci_q} + {{4{1'b0}}, co_q} == n_f);
+      end else begin
+        // Arc: SUB, ADD track the magnitudes; D = x^2 + y^2 - R^2.
+        assert(ci_one_q == (ci_q == 1));
+        assert(co_ti_q == ({2'b00, co_q} == ti_f));
+        assert(sub_q == {ci_q, 1'b0} - 1'b1);
+        assert(add_q == {co_q, 1'b1});
+        assert(d_s == ci_s * ci_s + co_s * co_s - r2_s);
+        if (k_q == 3'd0) begin
+          assert({2'b00, ci_q} >= ti_f);
+          assert({2'b00, co_q} <= to_f);
+        end
+      end
+    end
+  end
+
+  // At most one unit of motion per clock: the pulse moves exactly one axis
+  // by one, and no register changes without a step or a load.
+  always @(posedge i_clk) begin
+    if (past_valid_f && !$past(i_rst) && !i_rst && !$past(ld) && !$past(st)) begin
+      assert(d_q == $past(d_q) && ci_q == $past(ci_q) && co_q == $past(co_q));
+      assert(o_pulse == 1'b0);
+    end
+  end
+`endif
+
+endmodule

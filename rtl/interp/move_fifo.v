@@ -1,0 +1,66 @@
+// move_fifo: the move queue. First-word-fall-through FIFO: the head block
+// is on o_data whenever o_valid is high, and i_pop takes it. The storage is
+// a synchronous-read memory (an iCE40 block RAM) behind one output
+// register, so the head is always a register. A push while full is ignored
+// here; wb_regs refuses and flags it before it gets here.
+`default_nettype none
+
+module move_fifo #(
+    parameter integer WIDTH = 16,  // block width in bits
+    parameter integer AW = 4       // log2 of the memory depth
+) (
+    input  wire             i_clk,
+    input  wire             i_rst,
+    input  wire             i_flush,    // drop every queued block
+    input  wire             i_push,
+    input  wire [WIDTH-1:0] i_data,
+    output wire             o_full,
+    input  wire             i_pop,
+    output reg              o_valid,
+    output reg  [WIDTH-1:0] o_data,
+    output wire [AW+1:0]    o_level     // blocks queued, head included
+);
+
+  localparam integer DEPTH = 1 << AW;
+
+  reg [WIDTH-1:0] mem [0:DEPTH-1];
+  reg [AW:0] wptr_q, rptr_q;
+
+  wire [AW:0] used = wptr_q - rptr_q;
+  wire mem_empty = (used == 0);
+  assign o_full = used[AW];
+  assign o_level = {1'b0, used} + {{(AW+1){1'b0}}, o_valid};
+
+  wire wr = i_push & ~o_full;
+  wire rd = ~mem_empty & (~o_valid | i_pop);
+
+  // Memory write port.
+  always @(posedge i_clk) begin
+    if (wr) mem[wptr_q[AW-1:0]] <= i_data;
+  end
+
+  // Memory read port into the output register.
+  always @(posedge i_clk) begin
+    if (rd) o_data <= mem[rptr_q[AW-1:0]];
+  end
+
+  // Write pointer.
+  always @(posedge i_clk) begin
+    if (i_rst | i_flush) wptr_q <= {(AW+1){1'b0}};
+    else if (wr) wptr_q <= wptr_q + 1'b1;
+  end
+
+  // Read pointer.
+  always @(posedge i_clk) begin
+    if (i_rst | i_flush) rptr_q <= {(AW+1){1'b0}};
+    else if (rd) rptr_q <= rptr_q + 1'b1;
+  end
+
+  // Head valid.
+  always @(posedge i_clk) begin
+    if (i_rst | i_flush) o_valid <= 1'b0;
+    else if (rd) o_valid <= 1'b1;
+    else if (i_pop) o_valid <= 1'b0;
+  end
+
+endmodule

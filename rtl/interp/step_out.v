@@ -1,0 +1,64 @@
+// step_out: the step/dir output stage of both axes, and the overrun rule.
+//
+// A command pulse reaches the core only when the output can take the pulse
+// it will produce: both channels free and no pulse on its way from the
+// core (the core's pulse output is registered). A command pulse that comes
+// while a move runs and the output cannot take it does not advance the
+// interpolation; it sets the sticky overrun flag and counts in OVR_COUNT.
+// No pulse is ever dropped after the core has produced it.
+`default_nettype none
+
+module step_out #(
+    parameter integer TW = 16  // timing register width
+) (
+    input  wire          i_clk,
+    input  wire          i_rst,
+    input  wire          i_clear,      // clear the overrun flag and count
+    input  wire [TW-1:0] i_len,
+    input  wire [TW-1:0] i_space,
+    input  wire [TW-1:0] i_setup,
+    input  wire [TW-1:0] i_hold,
+    input  wire          i_cmd,        // command pulse (cmd_gen)
+    input  wire          i_busy,       // the core has a move running
+    output wire          o_cmd,        // command pulse passed to the core
+    input  wire          i_pulse,      // the core's output pulse
+    input  wire          i_pulse_y,
+    input  wire          i_pulse_neg,
+    output wire          o_step_x,
+    output wire          o_dir_x,
+    output wire          o_step_y,
+    output wire          o_dir_y,
+    output reg           o_overrun,
+    output reg  [31:0]   o_ovr_count
+);
+
+  wire rdy_x, rdy_y;
+  wire ready = rdy_x & rdy_y & ~i_pulse;
+  assign o_cmd = i_cmd & ready;
+  wire overrun = i_cmd & ~ready & i_busy;
+
+  step_chan #(.TW(TW)) u_x (
+      .i_clk(i_clk), .i_rst(i_rst), .i_len(i_len), .i_space(i_space), .i_setup(i_setup),
+      .i_hold(i_hold), .i_take(i_pulse & ~i_pulse_y), .i_neg(i_pulse_neg), .o_ready(rdy_x),
+      .o_step(o_step_x), .o_dir(o_dir_x)
+  );
+
+  step_chan #(.TW(TW)) u_y (
+      .i_clk(i_clk), .i_rst(i_rst), .i_len(i_len), .i_space(i_space), .i_setup(i_setup),
+      .i_hold(i_hold), .i_take(i_pulse & i_pulse_y), .i_neg(i_pulse_neg), .o_ready(rdy_y),
+      .o_step(o_step_y), .o_dir(o_dir_y)
+  );
+
+  // Sticky overrun flag.
+  always @(posedge i_clk) begin
+    if (i_rst | i_clear) o_overrun <= 1'b0;
+    else if (overrun) o_overrun <= 1'b1;
+  end
+
+  // Overrun count, saturating.
+  always @(posedge i_clk) begin
+    if (i_rst | i_clear) o_ovr_count <= 32'd0;
+    else if (overrun && o_ovr_count != 32'hFFFF_FFFF) o_ovr_count <= o_ovr_count + 1'b1;
+  end
+
+endmodule

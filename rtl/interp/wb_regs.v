@@ -1,0 +1,167 @@
+// wb_regs: the register file of interp_top, a Wishbone B4 classic slave
+// (32-bit data, byte addresses of 32-bit words, whole-word writes: SEL is
+// not used). Every access is acknowledged in the clock after STB (one
+// wait state); reads are registered. Offsets and fields come from
+// interp_regs.vh, generated from regmap.def (docs/regmap.md).
+`default_nettype none
+
+module wb_regs #(
+    parameter integer W = 24,   // coordinate width
+    parameter integer QAW = 4   // log2 of the queue depth
+) (
+    input  wire          i_clk,
+    input  wire          i_rst,
+    // Wishbone
+    input  wire          i_wb_cyc,
+    input  wire          i_wb_stb,
+    input  wire          i_wb_we,
+    input  wire [7:0]    i_wb_adr,
+    input  wire [31:0]   i_wb_dat,
+    output reg  [31:0]   o_wb_dat,
+    output reg           o_wb_ack,
+    // Control
+    output reg  [1:0]    o_src,
+    output reg           o_abort,   // one clock
+    output reg           o_clear,   // one clock
+    output reg  [31:0]   o_feed,
+    output reg  [15:0]   o_len,
+    output reg  [15:0]   o_space,
+    output reg  [15:0]   o_setup,
+    output reg  [15:0]   o_hold,
+    // Staged block and push
+    output reg           o_push,    // one clock, only when the queue is not full
+    output wire          o_arc,
+    output wire          o_cw,
+    output wire          o_sxn,
+    output wire          o_syn,
+    output wire [1:0]    o_q,
+    output wire [2:0]    o_k,
+    output reg  [W-1:0]  o_xs,
+    output reg  [W-1:0]  o_ys,
+    output reg  [W-1:0]  o_xe,
+    output reg  [W-1:0]  o_ye,
+    // Status
+    input  wire          i_busy,
+    input  wire          i_full,
+    input  wire [QAW+1:0] i_level,
+    input  wire          i_overrun,
+    input  wire [31:0]   i_ovr_count,
+    input  wire [31:0]   i_pos_x,
+    input  wire [31:0]   i_pos_y,
+    input  wire [31:0]   i_moves
+);
+
+`include "interp_regs.vh"
+
+  localparam integer QDEPTH = (1 << QAW) + 2;  // memory, its output, the datapath
+
+  wire acc = i_wb_cyc & i_wb_stb & ~o_wb_ack;
+  wire wr = acc & i_wb_we;
+  wire [7:0] adr = {i_wb_adr[7:2], 2'b00};
+  wire [1:0] unused_adr = i_wb_adr[1:0];
+
+  reg [8:0] mode_q;
+  reg reject_q;
+  assign o_arc = mode_q[BLK_MODE_ARC];
+  assign o_cw = mode_q[BLK_MODE_CW];
+  assign o_sxn = mode_q[BLK_MODE_SXN];
+  assign o_syn = mode_q[BLK_MODE_SYN];
+  assign o_q = mode_q[BLK_MODE_Q +: 2];
+  assign o_k = mode_q[BLK_MODE_K +: 3];
+
+  // Acknowledge: one clock after the strobe, never two in a row.
+  always @(posedge i_clk) begin
+    if (i_rst) o_wb_ack <= 1'b0;
+    else o_wb_ack <= acc;
+  end
+
+  // Writable registers.
+  always @(posedge i_clk) begin
+    if (i_rst) begin
+      o_src <= R_CTRL[CTRL_SRC +: 2];
+      o_feed <= R_FEED;
+      o_len <= R_STEP_LEN[15:0];
+      o_space <= R_STEP_SPACE[15:0];
+      o_setup <= R_DIR_SETUP[15:0];
+      o_hold <= R_DIR_HOLD[15:0];
+      mode_q <= R_BLK_MODE[8:0];
+      o_xs <= R_BLK_XS[W-1:0];
+      o_ys <= R_BLK_YS[W-1:0];
+      o_xe <= R_BLK_XE[W-1:0];
+      o_ye <= R_BLK_YE[W-1:0];
+    end else if (wr) begin
+      case (adr)
+        A_CTRL: o_src <= i_wb_dat[CTRL_SRC +: 2];
+        A_FEED: o_feed <= i_wb_dat;
+        A_STEP_LEN: o_len <= i_wb_dat[15:0];
+        A_STEP_SPACE: o_space <= i_wb_dat[15:0];
+        A_DIR_SETUP: o_setup <= i_wb_dat[15:0];
+        A_DIR_HOLD: o_hold <= i_wb_dat[15:0];
+        A_BLK_MODE: mode_q <= i_wb_dat[8:0];
+        A_BLK_XS: o_xs <= i_wb_dat[W-1:0];
+        A_BLK_YS: o_ys <= i_wb_dat[W-1:0];
+        A_BLK_XE: o_xe <= i_wb_dat[W-1:0];
+        A_BLK_YE: o_ye <= i_wb_dat[W-1:0];
+        default: ;
+      endcase
+    end
+  end
+
+  // Strobes: abort, clear, push.
+  always @(posedge i_clk) begin
+    if (i_rst) begin
+      o_abort <= 1'b0;
+      o_clear <= 1'b0;
+      o_push <= 1'b0;
+    end else begin
+      o_abort <= wr && adr == A_CTRL && i_wb_dat[CTRL_ABORT];
+      o_clear <= wr && adr == A_CTRL && i_wb_dat[CTRL_CLEAR];
+      o_push <= wr && adr == A_PUSH && !i_full;
+    end
+  end
+
+  // Sticky reject: a push to a full queue.
+  always @(posedge i_clk) begin
+    if (i_rst || o_clear) reject_q <= 1'b0;
+    else if (wr && adr == A_PUSH && i_full) reject_q <= 1'b1;
+  end
+
+  // Read data.
+  always @(posedge i_clk) begin
+    if (acc & ~i_wb_we) begin
+      o_wb_dat <= 32'd0;
+      case (adr)
+        A_ID: o_wb_dat <= R_ID;
+        A_PARAMS: begin
+          o_wb_dat[PARAMS_W +: 8] <= W[7:0];
+          o_wb_dat[PARAMS_QDEPTH +: 8] <= QDEPTH[7:0];
+        end
+        A_CTRL: o_wb_dat[CTRL_SRC +: 2] <= o_src;
+        A_STATUS: begin
+          o_wb_dat[STATUS_BUSY] <= i_busy;
+          o_wb_dat[STATUS_EMPTY] <= (i_level == 0);
+          o_wb_dat[STATUS_FULL] <= i_full;
+          o_wb_dat[STATUS_OVERRUN] <= i_overrun;
+          o_wb_dat[STATUS_REJECT] <= reject_q;
+          o_wb_dat[STATUS_LEVEL +: QAW+2] <= i_level;
+        end
+        A_FEED: o_wb_dat <= o_feed;
+        A_STEP_LEN: o_wb_dat[15:0] <= o_len;
+        A_STEP_SPACE: o_wb_dat[15:0] <= o_space;
+        A_DIR_SETUP: o_wb_dat[15:0] <= o_setup;
+        A_DIR_HOLD: o_wb_dat[15:0] <= o_hold;
+        A_OVR_COUNT: o_wb_dat <= i_ovr_count;
+        A_POS_X: o_wb_dat <= i_pos_x;
+        A_POS_Y: o_wb_dat <= i_pos_y;
+        A_MOVES: o_wb_dat <= i_moves;
+        A_BLK_MODE: o_wb_dat[8:0] <= mode_q;
+        A_BLK_XS: o_wb_dat[W-1:0] <= o_xs;
+        A_BLK_YS: o_wb_dat[W-1:0] <= o_ys;
+        A_BLK_XE: o_wb_dat[W-1:0] <= o_xe;
+        A_BLK_YE: o_wb_dat[W-1:0] <= o_ye;
+        default: ;
+      endcase
+    end
+  end
+
+endmodule
