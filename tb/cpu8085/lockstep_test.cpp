@@ -165,7 +165,7 @@ TEST(Lockstep, Sw8085Programs) {
     if (e.is_regular_file() && e.path().extension() == ".hex") hexes.push_back(e.path());
   std::sort(hexes.begin(), hexes.end());
   ASSERT_FALSE(hexes.empty()) << "no assembled programs under " << contour::sw8085::kHexDir;
-  constexpr std::uint64_t kCap = 20'000'000;
+  constexpr std::uint64_t kCap = 2'000'000;
   for (const fs::path& p : hexes) {
     SCOPED_TRACE(p.string());
     const i8085::HexImage img = i8085::read_hex_file(p.string());
