@@ -1,0 +1,115 @@
+#include "cases.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <stdexcept>
+
+namespace contour::cosim {
+
+namespace {
+
+Case line_case(std::string name, std::string title, std::int64_t xe, std::int64_t ye) {
+  return Case{std::move(name), std::move(title), {Move::line(xe, ye)}};
+}
+
+Case arc_case(std::string name, std::string title, std::int64_t xs, std::int64_t ys, std::int64_t xe,
+              std::int64_t ye, Sense s) {
+  return Case{std::move(name), std::move(title), {Move::arc(xs, ys, xe, ye, s)}};
+}
+
+// A rounded rectangle, 40 x 24 with corner radius 8, CCW: lines and
+// quarter arcs chained, so that moves follow each other in the queues.
+Case rounded_rectangle() {
+  Case c{"slot", "rounded rectangle: 4 lines + 4 quarter arcs, back to back", {}};
+  const std::int64_t r = 8;
+  c.moves = {
+      Move::line(40, 0),  Move::arc(0, -r, r, 0, Sense::CCW),  Move::line(0, 24),
+      Move::arc(r, 0, 0, r, Sense::CCW),  Move::line(-40, 0), Move::arc(0, r, -r, 0, Sense::CCW),
+      Move::line(0, -24), Move::arc(-r, 0, 0, -r, Sense::CCW),
+  };
+  return c;
+}
+
+std::map<std::string, Suite> build() {
+  std::map<std::string, Suite> s;
+  const Case fig2 = line_case("fig2", "paper A Fig. 2: line to (6, 5), 11 pulses", 6, 5);
+  const Case fig5 = arc_case("fig5", "paper A Fig. 5: arc (6, 0) to (0, 6) CCW, 12 pulses", 6, 0, 0, 6, Sense::CCW);
+  // Rates: fine around the 8085's limit (a few kpps), then decades to
+  // paper A's 250 kpps; the core goes on to where its output stage refuses.
+  const std::vector<double> paper_rates = {1e3,   2e3,   2.5e3, 3e3,   3.5e3, 4e3,   4.5e3, 5e3,  6e3,
+                                           8e3,   10e3,  20e3,  50e3,  100e3, 250e3, 500e3, 1e6,  2e6};
+  s["paper"] = Suite{"paper", "paper A's Fig. 2 (line) and Fig. 5 (arc)", {fig2, fig5}, paper_rates};
+
+  const std::vector<Case> smoke_cases = {
+      line_case("line-neg", "line to (-23, 31): X negative, Y positive", -23, 31),
+      arc_case("arc-3q", "three-quarter arc (0, 12) to (12, 0) CCW through Q2, Q3, Q4", 0, 12, 12, 0, Sense::CCW),
+      arc_case("circle-cw", "full circle R = 10 CW from (10, 0)", 10, 0, 10, 0, Sense::CW),
+      rounded_rectangle(),
+  };
+  s["smoke"] = Suite{"smoke", "signs, quadrant crossings, a full circle, chained moves", smoke_cases,
+                     {1e3, 3e3, 4e3, 5e3, 10e3, 50e3, 250e3, 1e6}};
+
+  std::vector<Case> full = {fig2, fig5};
+  for (const auto& c : smoke_cases) full.push_back(c);
+  full.push_back(line_case("line-long", "line to (300, -113)", 300, -113));
+  full.push_back(line_case("line-y", "pure Y line to (0, -40)", 0, -40));
+  full.push_back(arc_case("circle-ccw", "full circle R = 50 CCW from (30, 40)", 30, 40, 30, 40, Sense::CCW));
+  full.push_back(arc_case("arc-big", "arc R = 1000 (600, 800) to (-800, 600) CCW", 600, 800, -800, 600, Sense::CCW));
+  s["full"] = Suite{"full", "paper + smoke + long lines and large circles", full,
+                    {1e3, 2e3, 3e3, 3.5e3, 4e3, 4.5e3, 5e3, 6e3, 10e3, 50e3, 100e3, 250e3, 500e3, 1e6, 2e6}};
+  return s;
+}
+
+const std::map<std::string, Suite>& suites() {
+  static const std::map<std::string, Suite> s = build();
+  return s;
+}
+
+}  // namespace
+
+const Suite& suite(const std::string& name) {
+  const auto& all = suites();
+  const auto it = all.find(name);
+  if (it == all.end()) {
+    std::string known;
+    for (const auto& n : suite_names()) known += (known.empty() ? "" : "|") + n;
+    throw std::invalid_argument("unknown suite '" + name + "' (known: " + known + ")");
+  }
+  return it->second;
+}
+
+std::vector<std::string> suite_names() { return {"paper", "smoke", "full"}; }
+
+bool engine_runs_at(const std::string& engine, double rate_pps) {
+  if (engine == "iss" || engine == "8085") return rate_pps <= kMaxRate8085;
+  return true;
+}
+
+std::vector<Placed> place(const std::vector<Move>& moves) {
+  std::vector<Placed> out;
+  std::int64_t x = 0, y = 0;
+  for (const auto& m : moves) {
+    Placed p{m, x, y, x, y, x, y};
+    if (m.is_arc()) {
+      p.origin_x = x - m.xs;
+      p.origin_y = y - m.ys;
+    }
+    p.end_x = p.origin_x + m.xe;
+    p.end_y = p.origin_y + m.ye;
+    x = p.end_x;
+    y = p.end_y;
+    out.push_back(p);
+  }
+  return out;
+}
+
+std::string rate_label(double r) {
+  char buf[32];
+  if (r >= 1e6) std::snprintf(buf, sizeof buf, "%gM", r / 1e6);
+  else if (r >= 1e3) std::snprintf(buf, sizeof buf, "%gk", r / 1e3);
+  else std::snprintf(buf, sizeof buf, "%g", r);
+  return buf;
+}
+
+}  // namespace contour::cosim

@@ -1,0 +1,60 @@
+// The co-simulation's test cases and suites: named sequences of moves (a
+// path), and the command rates each suite sweeps.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "interp/engine.hpp"
+
+namespace contour::cosim {
+
+// One case: a path of moves run back to back (each move starts where the
+// previous one ended; a line is relative to its start, an arc to its
+// centre, as everywhere in the project).
+struct Case {
+  std::string name;   // short, for tables and file names
+  std::string title;  // one line for the report
+  std::vector<Move> moves;
+};
+
+struct Suite {
+  std::string name;
+  std::string summary;
+  std::vector<Case> cases;
+  std::vector<double> rates;  // --sweep: command rates in pulses/s, ascending
+};
+
+// "paper", "smoke", "full". Throws std::invalid_argument naming the suite
+// and listing the known ones.
+const Suite& suite(const std::string& name);
+std::vector<std::string> suite_names();
+
+// The engines a co-simulation can run, in report order.
+inline const std::vector<std::string>& engine_names() {
+  static const std::vector<std::string> names = {"model", "rtl", "iss", "8085"};
+  return names;
+}
+
+// Above this rate the 8085 engines are not run: paper A's target for the
+// dedicated processor, and 60 times what the program can do.
+inline constexpr double kMaxRate8085 = 250e3;
+// Up to this rate the Verilog core must lose nothing (paper A's 250 kpps).
+inline constexpr double kCoreRequiredRate = 250e3;
+
+bool engine_runs_at(const std::string& engine, double rate_pps);
+
+// Where a move starts and its frame origin, on the path of a case.
+struct Placed {
+  Move move;
+  std::int64_t start_x = 0, start_y = 0;    // absolute start point
+  std::int64_t origin_x = 0, origin_y = 0;  // line: the start; arc: the centre
+  std::int64_t end_x = 0, end_y = 0;        // absolute end point
+};
+std::vector<Placed> place(const std::vector<Move>& moves);
+
+// "250k", "1M", "3.5k": rates as the report and the CLI print them.
+std::string rate_label(double rate_pps);
+
+}  // namespace contour::cosim

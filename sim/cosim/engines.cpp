@@ -1,0 +1,625 @@
+#include "engines.hpp"
+
+#include <verilated.h>
+#include <verilated_fst_sc.h>
+
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+#include "Vcosim_board.h"
+#include "Vcosim_interp.h"
+#include "sw8085/interp/host.hpp"
+#include "sw8085/interp/mailbox.hpp"
+
+using sc_core::sc_time;
+using sc_core::sc_time_stamp;
+using sc_core::SC_ZERO_TIME;
+
+namespace contour::cosim {
+
+namespace {
+
+// Waits until the next multiple of `period` (now if on one): a clock that
+// was stopped restarts on its grid.
+void align(const sc_time& period) {
+  const auto rem = sc_time_stamp().value() % period.value();
+  if (rem) sc_core::wait(sc_time::from_value(period.value() - rem));
+}
+
+Pulse step_pulse(Axis a, bool dir_negative) { return Pulse{a, static_cast<std::int8_t>(dir_negative ? -1 : +1)}; }
+
+}  // namespace
+
+// --- faults --------------------------------------------------------------------
+
+Fault parse_fault(const std::string& text) {
+  const auto c1 = text.find(':');
+  const auto c2 = c1 == std::string::npos ? std::string::npos : text.find(':', c1 + 1);
+  if (c2 == std::string::npos)
+    throw std::invalid_argument("--inject '" + text + "': expected ENGINE:drop|swap|flip:N");
+  Fault f;
+  f.engine = text.substr(0, c1);
+  const std::string kind = text.substr(c1 + 1, c2 - c1 - 1), n = text.substr(c2 + 1);
+  if (kind == "drop") f.kind = Fault::Kind::Drop;
+  else if (kind == "swap") f.kind = Fault::Kind::Swap;
+  else if (kind == "flip") f.kind = Fault::Kind::Flip;
+  else throw std::invalid_argument("--inject '" + text + "': fault '" + kind + "' is not drop, swap or flip");
+  bool known = false;
+  for (const auto& e : engine_names()) known |= e == f.engine;
+  if (!known) throw std::invalid_argument("--inject '" + text + "': unknown engine '" + f.engine + "'");
+  char* end = nullptr;
+  const unsigned long long v = std::strtoull(n.c_str(), &end, 10);
+  if (n.empty() || *end != '\0' || v == 0)
+    throw std::invalid_argument("--inject '" + text + "': pulse number '" + n + "' is not a positive integer");
+  f.at = v;
+  return f;
+}
+
+void FaultInjector::pulse(const Pulse& p, const std::string& state) {
+  ++n_;
+  switch (fault_.kind) {
+    case Fault::Kind::Drop:
+      if (n_ != fault_.at) next_.pulse(p, state);
+      return;
+    case Fault::Kind::Flip:
+      if (n_ == fault_.at) next_.pulse(Pulse{p.axis, static_cast<std::int8_t>(-p.sign)}, state);
+      else next_.pulse(p, state);
+      return;
+    case Fault::Kind::Swap:
+      if (n_ == fault_.at) {
+        held_ = {p, state};  // goes out after the next one
+        return;
+      }
+      next_.pulse(p, state);
+      if (held_) {
+        next_.pulse(held_->first, held_->second);
+        held_.reset();
+      }
+      return;
+  }
+}
+
+// --- model ---------------------------------------------------------------------
+
+ModelEngine::ModelEngine(sc_core::sc_module_name n) : CosimEngine(n) {
+  SC_METHOD(on_cmd);
+  sensitive << i_cmd.pos();
+  dont_initialize();
+}
+
+void ModelEngine::begin_case(const Case& c) {
+  moves_ = place(c.moves);
+  next_ = 0;
+  cur_ = nullptr;
+  active_ = true;
+  start_next();
+}
+
+bool ModelEngine::start_next() {
+  lin_.reset();
+  circ_.reset();
+  cur_ = nullptr;
+  while (next_ < moves_.size()) {
+    cur_ = &moves_[next_++];
+    const Move& m = cur_->move;
+    if (m.is_arc()) circ_.emplace(m.xs, m.ys, m.xe, m.ye, m.sense);
+    else lin_.emplace(m.xe, m.ye);
+    if (!(lin_ ? lin_->done() : circ_->done())) return true;
+  }
+  cur_ = nullptr;
+  return false;
+}
+
+void ModelEngine::on_cmd() {
+  if (!active_ || !cur_) return;
+  const std::optional<Pulse> p = lin_ ? lin_->step() : circ_->step();
+  const State s = lin_ ? lin_->state() : circ_->state();
+  if (p) emit(*p, to_string(s));
+  if (lin_ ? lin_->done() : circ_->done()) start_next();
+}
+
+void ModelEngine::end_case(EngineRun& run) {
+  active_ = false;
+  run.overruns_known = true;  // the model never refuses a command pulse
+  run.overruns = 0;
+}
+
+// --- rtl: interp_top -----------------------------------------------------------------
+
+namespace reg {
+// docs/regmap.md (rtl/interp/regmap.def): byte offsets of 32-bit words.
+constexpr std::uint32_t kCtrl = 0x08, kStatus = 0x0C, kStepLen = 0x14, kStepSpace = 0x18, kDirSetup = 0x1C,
+                        kDirHold = 0x20, kOvrCount = 0x24, kPosX = 0x28, kPosY = 0x2C, kBlkMode = 0x34,
+                        kBlkXs = 0x38, kBlkYs = 0x3C, kBlkXe = 0x40, kBlkYe = 0x44, kPush = 0x48;
+constexpr std::uint32_t kSrcPin = 1, kCtrlClear = 1u << 3;
+constexpr std::uint32_t kStatusBusy = 1, kStatusFull = 4, kStatusReject = 16;
+}  // namespace reg
+
+CoreEngine::CoreEngine(sc_core::sc_module_name n, double f_clk_hz, StepTiming timing, bool free_clock)
+    : CosimEngine(n),
+      period_(sc_time::from_value(static_cast<sc_dt::uint64>(1e12 / f_clk_hz + 0.5))),
+      timing_(timing),
+      free_clock_(free_clock) {
+  // Clocks the core needs after a command edge to settle: the pin
+  // synchroniser, the datapath, and one step through the output stage.
+  awake_cycles_ = 64 + 2ull * (timing.len + timing.space + timing.setup + timing.hold);
+  top_ = std::make_unique<Vcosim_interp>("interp_top");
+  top_->i_clk(clk_);
+  top_->i_rst(rst_);
+  top_->i_wb_cyc(cyc_);
+  top_->i_wb_stb(stb_);
+  top_->i_wb_we(we_);
+  top_->i_wb_adr(adr_);
+  top_->i_wb_dat(wdat_);
+  top_->o_wb_dat(rdat_);
+  top_->o_wb_ack(ack_);
+  top_->i_cmd_pin(i_cmd);
+  top_->o_step_x(step_x_);
+  top_->o_dir_x(dir_x_);
+  top_->o_step_y(step_y_);
+  top_->o_dir_y(dir_y_);
+  top_->o_pulse(pulse_);
+  top_->o_pulse_y(pulse_y_);
+  top_->o_pulse_neg(pulse_neg_);
+  top_->o_busy(busy_);
+  SC_THREAD(clock_thread);
+  SC_METHOD(on_cmd);
+  sensitive << i_cmd.pos();
+  dont_initialize();
+  SC_METHOD(on_step);
+  sensitive << step_x_ << step_y_;
+  dont_initialize();
+}
+
+CoreEngine::~CoreEngine() { close_trace(); }
+
+void CoreEngine::open_trace(const std::string& path) {
+  trace_ = std::make_unique<VerilatedFstSc>();
+  top_->trace(trace_.get(), 99);
+  trace_->open(path.c_str());
+}
+
+void CoreEngine::close_trace() {
+  if (trace_) trace_->close();
+  trace_.reset();
+}
+
+void CoreEngine::keep_awake(std::uint64_t cycles) {
+  const sc_time until = sc_time_stamp() + period_ * static_cast<double>(cycles);
+  if (until > run_until_) run_until_ = until;
+  wake_.notify(SC_ZERO_TIME);
+}
+
+void CoreEngine::clock_thread() {
+  const sc_time half = period_ / 2.0;
+  const sc_time rest = period_ - half;
+  while (true) {
+    if (!free_clock_ && sc_time_stamp() >= run_until_) {
+      sc_core::wait(wake_);
+      continue;
+    }
+    align(period_);
+    clk_.write(true);
+    ++clocks_;
+    sc_core::wait(half);
+    clk_.write(false);
+    sc_core::wait(rest);
+  }
+}
+
+void CoreEngine::on_cmd() { keep_awake(awake_cycles_); }
+
+void CoreEngine::on_step() {
+  const bool x = step_x_.read(), y = step_y_.read();
+  if (x && !last_x_) emit(step_pulse(Axis::X, dir_x_.read()));
+  if (y && !last_y_) emit(step_pulse(Axis::Y, dir_y_.read()));
+  last_x_ = x;
+  last_y_ = y;
+}
+
+void CoreEngine::wb_cycle(bool we, std::uint32_t adr, std::uint32_t v, std::uint32_t* out) {
+  keep_awake(64);
+  sc_core::wait(clk_.negedge_event());
+  cyc_.write(true);
+  stb_.write(true);
+  we_.write(we);
+  adr_.write(adr);
+  wdat_.write(v);
+  for (int n = 0;; ++n) {
+    if (n > 32) throw std::runtime_error("rtl: no Wishbone ACK at offset " + std::to_string(adr));
+    keep_awake(64);
+    sc_core::wait(clk_.negedge_event());
+    if (ack_.read()) break;
+  }
+  if (out) *out = rdat_.read();
+  cyc_.write(false);
+  stb_.write(false);
+  we_.write(false);
+}
+
+void CoreEngine::wb_write(std::uint32_t adr, std::uint32_t v) { wb_cycle(true, adr, v, nullptr); }
+
+std::uint32_t CoreEngine::wb_read(std::uint32_t adr) {
+  std::uint32_t v = 0;
+  wb_cycle(false, adr, 0, &v);
+  return v;
+}
+
+void CoreEngine::begin_case(const Case& c) {
+  moves_ = place(c.moves);
+  keep_awake(64);
+  rst_.write(true);
+  for (int i = 0; i < 4; ++i) sc_core::wait(clk_.negedge_event());
+  rst_.write(false);
+  wb_write(reg::kStepLen, timing_.len);
+  wb_write(reg::kStepSpace, timing_.space);
+  wb_write(reg::kDirSetup, timing_.setup);
+  wb_write(reg::kDirHold, timing_.hold);
+  for (const auto& p : moves_) {
+    // The host's part (docs/regmap.md): validate, then stage magnitudes,
+    // signs, and for an arc the start quadrant and crossings.
+    const Move& m = p.move;
+    validate<24>(m);
+    auto mag = [](std::int64_t v) { return static_cast<std::uint32_t>(v < 0 ? -v : v); };
+    std::uint32_t mode = 0;
+    if (m.is_arc()) {
+      const auto plan = Circular<24>::validate(m.xs, m.ys, m.xe, m.ye, m.sense);
+      mode = 1u | (m.sense == Sense::CW ? 2u : 0u) | static_cast<std::uint32_t>(plan.q_start) << 4 |
+             static_cast<std::uint32_t>(plan.crossings) << 6;
+      wb_write(reg::kBlkXs, mag(m.xs));
+      wb_write(reg::kBlkYs, mag(m.ys));
+    } else {
+      mode = (m.xe < 0 ? 4u : 0u) | (m.ye < 0 ? 8u : 0u);
+    }
+    wb_write(reg::kBlkMode, mode);
+    wb_write(reg::kBlkXe, mag(m.xe));
+    wb_write(reg::kBlkYe, mag(m.ye));
+    if (wb_read(reg::kStatus) & reg::kStatusFull) throw std::runtime_error("rtl: move queue full");
+    wb_write(reg::kPush, 1);
+    if (wb_read(reg::kStatus) & reg::kStatusReject) throw std::runtime_error("rtl: PUSH refused");
+  }
+  wb_write(reg::kCtrl, reg::kSrcPin);
+  // The first block is loaded before the first command pulse.
+  for (int n = 0; !(wb_read(reg::kStatus) & reg::kStatusBusy); ++n)
+    if (n > 100) throw std::runtime_error("rtl: the core did not start the first move");
+}
+
+void CoreEngine::end_case(EngineRun& run) {
+  run.overruns_known = true;
+  run.overruns = wb_read(reg::kOvrCount);
+  run.position_known = true;
+  run.x = static_cast<std::int32_t>(wb_read(reg::kPosX));
+  run.y = static_cast<std::int32_t>(wb_read(reg::kPosY));
+  wb_write(reg::kCtrl, 0);
+}
+
+// --- iss: the program on the C++ ISS ------------------------------------------------
+
+IssEngine::IssEngine(sc_core::sc_module_name n, double f_clk_hz)
+    : CosimEngine(n), period_(sc_time::from_value(static_cast<sc_dt::uint64>(1e12 / f_clk_hz + 0.5))) {
+  SC_THREAD(cpu_thread);
+  SC_METHOD(on_cmd);
+  sensitive << i_cmd;
+  dont_initialize();
+}
+
+IssEngine::~IssEngine() = default;
+
+void IssEngine::begin_case(const Case& c) {
+  moves_ = place(c.moves);
+  next_move_ = 0;
+  next_slot_ = 0;
+  queued_.clear();
+  slot_move_ = {-1, -1};
+  pulses_ = 0;
+  edge_ = false;
+  error_.clear();
+  host_ = std::make_unique<sw8085::Host>();  // boots: the program is in its idle loop
+  feed();
+  parked_ = false;
+  active_ = true;
+  started_.notify(SC_ZERO_TIME);
+}
+
+void IssEngine::feed() {
+  while (next_move_ < moves_.size() && host_->slot_free(next_slot_)) {
+    queued_.push_back(std::make_unique<sw8085::SlotMove>(host_->queue(moves_[next_move_].move)));
+    slot_move_[next_slot_] = static_cast<int>(queued_.size() - 1);
+    next_slot_ ^= 1;
+    ++next_move_;
+  }
+}
+
+int IssEngine::active_move() const {
+  const std::uint8_t base = host_->bus().mem[sw8085::kMailbox + sw8085::kActive];
+  for (int i = 0; i < 2; ++i)
+    if (slot_move_[i] >= 0 && queued_[slot_move_[i]]->base == base) return slot_move_[i];
+  return -1;
+}
+
+void IssEngine::collect() {
+  auto& bus = host_->bus();
+  for (const auto& w : bus.outs) {
+    if (w.port != sw8085::kPortStep) continue;
+    const auto p = sw8085::decode_pattern(w.value);
+    if (!p) {
+      error_ = "OUT 10h with a bad step pattern " + std::to_string(w.value);
+      continue;
+    }
+    ++pulses_;
+    std::string state;
+    const int mi = active_move();
+    if (mi >= 0) {
+      try {
+        state = to_string(host_->state(*queued_[mi], 0));
+      } catch (const std::exception& e) {
+        state = std::string("(mailbox: ") + e.what() + ")";
+      }
+    }
+    emit(*p, state);
+  }
+  bus.outs.clear();
+}
+
+void IssEngine::cpu_thread() {
+  while (true) {
+    if (!active_ || !error_.empty()) {
+      parked_ = true;
+      parked_ev_.notify(SC_ZERO_TIME);
+      sc_core::wait(started_);
+      continue;
+    }
+    auto& m = host_->machine();
+    if (m.halted() && !edge_) {
+      sc_core::wait(rise_ | stop_);
+      if (active_) align(period_);
+      continue;
+    }
+    edge_ = false;
+    const int t = m.step();
+    if (!host_->bus().fault.empty()) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, " (PC was %04X)", m.last().pc);
+      error_ = host_->bus().fault + buf;
+    }
+    sc_core::wait(period_ * static_cast<double>(t));
+    collect();
+    feed();
+  }
+}
+
+void IssEngine::on_cmd() {
+  if (!active_) return;
+  const bool level = i_cmd.read();
+  host_->machine().set_rst75(level);
+  if (level) {
+    ++host_->bus().edges;
+    edge_ = true;
+    rise_.notify(SC_ZERO_TIME);
+  }
+}
+
+void IssEngine::end_case(EngineRun& run) {
+  active_ = false;
+  stop_.notify(SC_ZERO_TIME);
+  while (!parked_) sc_core::wait(parked_ev_);
+  run.error = error_;
+  run.overruns_known = true;
+  run.overruns = host_->overruns();
+  const int mi = active_move();
+  run.position_known = true;
+  if (mi < 0) {
+    run.x = run.y = 0;
+  } else {
+    const State s = host_->state(*queued_[mi], 0);
+    run.x = moves_[mi].origin_x + s.x;
+    run.y = moves_[mi].origin_y + s.y;
+  }
+}
+
+// --- 8085: board8085 --------------------------------------------------------------
+
+void write_rom_memh(const std::string& path) {
+  const auto& img = sw8085::Program::builtin().image;
+  std::ofstream f(path);
+  if (!f) throw std::runtime_error(path + ": cannot write the ROM image");
+  char buf[8];
+  for (std::size_t a = 0; a < sw8085::kRomEnd; ++a) {
+    std::snprintf(buf, sizeof buf, "%02X\n", img[a]);
+    f << buf;
+  }
+  if (!f) throw std::runtime_error(path + ": write failed");
+}
+
+BoardEngine::BoardEngine(sc_core::sc_module_name n, double f_clk_hz, const std::string& rom_memh)
+    : CosimEngine(n),
+      clk_("clk", sc_time::from_value(static_cast<sc_dt::uint64>(1e12 / f_clk_hz + 0.5))),
+      codes_(std::make_unique<sw8085::Codes>(sw8085::Codes::from_symbols(sw8085::Program::builtin().symbols))) {
+  const std::string plus = "+rom=" + rom_memh;
+  const char* argv[] = {"contour-cosim", plus.c_str()};
+  Verilated::commandArgs(2, argv);
+  top_ = std::make_unique<Vcosim_board>("board8085");
+  top_->i_clk(clk_);
+  top_->i_rst(rst_);
+  top_->i_cmd(cmd_sync_);
+  top_->i_trap(zero_);
+  top_->i_rst65(zero_);
+  top_->i_rst55(zero_);
+  top_->i_intr(zero_);
+  top_->i_intr_vec(intr_vec_);
+  top_->o_step_x(step_x_);
+  top_->o_step_y(step_y_);
+  top_->o_step_z(step_z_);
+  top_->o_dir_x(dir_x_);
+  top_->o_dir_y(dir_y_);
+  top_->o_dir_z(dir_z_);
+  top_->o_done(done_);
+  top_->o_debug(debug_);
+  top_->o_debug_we(debug_we_);
+  top_->i_host_addr(host_addr_);
+  top_->i_host_wdata(host_wdata_);
+  top_->i_host_we(host_we_);
+  top_->o_host_rdata(host_rdata_);
+  top_->o_host_overrun(host_ovr_);
+  top_->o_cpu_addr(cpu_addr_);
+  top_->o_cpu_dout(cpu_dout_);
+  top_->o_cpu_wr(cpu_wr_);
+  top_->o_cpu_io(cpu_io_);
+  top_->o_retire(retire_);
+  top_->o_dbg_kind(dbg_kind_);
+  top_->o_dbg_irq(dbg_irq_);
+  top_->o_dbg_ipc(dbg_ipc_);
+  top_->o_dbg_op(dbg_op_);
+  top_->o_dbg_pc(dbg_pc_);
+  top_->o_dbg_sp(dbg_sp_);
+  top_->o_dbg_regs(dbg_regs_);
+  top_->o_halted(halted_);
+  top_->o_ie(ie_);
+  top_->o_sod(sod_);
+  SC_THREAD(host_thread);
+  SC_METHOD(on_clk);
+  sensitive << clk_.posedge_event();
+  dont_initialize();
+  SC_METHOD(on_step);
+  sensitive << step_x_ << step_y_;
+  dont_initialize();
+}
+
+BoardEngine::~BoardEngine() { close_trace(); }
+
+void BoardEngine::open_trace(const std::string& path) {
+  trace_ = std::make_unique<VerilatedFstSc>();
+  top_->trace(trace_.get(), 99);
+  trace_->open(path.c_str());
+}
+
+void BoardEngine::close_trace() {
+  if (trace_) trace_->close();
+  trace_.reset();
+}
+
+// The command input, registered into the board's clock domain (the board
+// wants it synchronous: it drives RST 7.5 and the edge counter).
+void BoardEngine::on_clk() { cmd_sync_.write(i_cmd.read()); }
+
+void BoardEngine::on_step() {
+  const bool x = step_x_.read(), y = step_y_.read();
+  if (x && !last_x_) emit(step_pulse(Axis::X, dir_x_.read()));
+  if (y && !last_y_) emit(step_pulse(Axis::Y, dir_y_.read()));
+  last_x_ = x;
+  last_y_ = y;
+}
+
+void BoardEngine::poke(std::uint8_t addr, std::uint8_t v) {
+  sc_core::wait(clk_.negedge_event());
+  host_addr_.write(addr);
+  host_wdata_.write(v);
+  host_we_.write(true);
+  sc_core::wait(clk_.negedge_event());
+  host_we_.write(false);
+}
+
+std::uint8_t BoardEngine::peek(std::uint8_t addr) {
+  sc_core::wait(clk_.negedge_event());
+  host_addr_.write(addr);
+  sc_core::wait(clk_.negedge_event());  // the read port answers one clock later
+  return static_cast<std::uint8_t>(host_rdata_.read());
+}
+
+bool BoardEngine::slot_free(int i) {
+  // A finished slot is free once the program has left it (sw8085 host rule).
+  if (slot_move_[i] < 0) return true;
+  const std::uint8_t base = sw8085::kSlots[i];
+  const std::uint8_t mode = peek(base);
+  if (mode != codes_->fin_p && mode != codes_->fin_n) return false;
+  return peek(sw8085::kActive) != base;
+}
+
+void BoardEngine::queue_next() {
+  const std::uint8_t base = sw8085::kSlots[next_slot_];
+  std::array<std::uint8_t, 256> img{};
+  auto sm = sw8085::encode(moves_[next_move_].move, base, *codes_, std::span<std::uint8_t, 256>(img));
+  const int lo = base - 4, hi = base + sw8085::kStatus;  // the slot spans base-4 .. base+0x3B
+  for (int a = 0; a < 256; ++a)
+    if (img[a] != 0 && (a < lo || a > hi))
+      throw std::logic_error("8085: sw8085::encode wrote outside its slot at " + std::to_string(a));
+  for (int a = lo; a < hi; ++a) poke(static_cast<std::uint8_t>(a), img[a]);
+  poke(static_cast<std::uint8_t>(hi), sw8085::kQueued);
+  queued_.push_back(std::make_unique<sw8085::SlotMove>(sm));
+  slot_move_[next_slot_] = static_cast<int>(queued_.size() - 1);
+  next_slot_ ^= 1;
+  ++next_move_;
+}
+
+void BoardEngine::host_thread() {
+  while (true) {
+    if (request_ == Request::Begin) {
+      try {
+        rst_.write(true);
+        for (int a = 0; a < 256; ++a) poke(static_cast<std::uint8_t>(a), 0);
+        sc_core::wait(clk_.negedge_event());
+        rst_.write(false);
+        for (int n = 0; peek(sw8085::kReady) != sw8085::kReadyMagic; ++n)
+          if (n > 50000) throw std::runtime_error("the program did not become ready");
+        if (peek(sw8085::kLayout) != sw8085::kLayoutVersion) throw std::runtime_error("mailbox layout version mismatch");
+        while (next_move_ < moves_.size() && slot_free(next_slot_)) queue_next();
+      } catch (const std::exception& e) {
+        error_ = e.what();
+      }
+      active_ = true;
+      request_ = Request::None;
+      reply_.notify(SC_ZERO_TIME);
+    } else if (request_ == Request::End) {
+      active_ = false;
+      std::array<std::uint8_t, 256> mb{};
+      for (int a = 0; a < 256; ++a) mb[a] = peek(static_cast<std::uint8_t>(a));
+      final_mailbox_ = mb;
+      request_ = Request::None;
+      reply_.notify(SC_ZERO_TIME);
+    } else if (active_ && error_.empty() && next_move_ < moves_.size()) {
+      if (slot_free(next_slot_)) queue_next();
+    } else {
+      sc_core::wait(request_ev_);
+    }
+  }
+}
+
+void BoardEngine::begin_case(const Case& c) {
+  moves_ = place(c.moves);
+  next_move_ = 0;
+  next_slot_ = 0;
+  queued_.clear();
+  slot_move_ = {-1, -1};
+  error_.clear();
+  request_ = Request::Begin;
+  request_ev_.notify(SC_ZERO_TIME);
+  sc_core::wait(reply_);
+}
+
+void BoardEngine::end_case(EngineRun& run) {
+  request_ = Request::End;
+  request_ev_.notify(SC_ZERO_TIME);
+  sc_core::wait(reply_);
+  run.error = error_;
+  if (host_ovr_.read()) run.error += (run.error.empty() ? "" : "; ") + std::string("a host mailbox write was lost");
+  const auto& mb = final_mailbox_;
+  run.overruns_known = true;
+  run.overruns = mb[sw8085::kOverruns] | mb[sw8085::kOverruns + 1] << 8 | mb[sw8085::kOverruns + 2] << 16;
+  run.position_known = true;
+  run.x = run.y = 0;
+  const std::uint8_t active = mb[sw8085::kActive];
+  for (int i = 0; i < 2; ++i) {
+    if (slot_move_[i] < 0 || queued_[slot_move_[i]]->base != active) continue;
+    try {
+      const State s = sw8085::decode(*queued_[slot_move_[i]], std::span<const std::uint8_t, 256>(mb), *codes_, 0);
+      run.x = moves_[slot_move_[i]].origin_x + s.x;
+      run.y = moves_[slot_move_[i]].origin_y + s.y;
+    } catch (const std::exception& e) {
+      run.position_known = false;
+      run.error += (run.error.empty() ? "" : "; ") + std::string("mailbox: ") + e.what();
+    }
+  }
+}
+
+}  // namespace contour::cosim

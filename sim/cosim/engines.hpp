@@ -1,0 +1,263 @@
+// The co-simulation's engines as SystemC modules. Each takes the command
+// pulse train on `i_cmd` and hands every output pulse, time-stamped in
+// SystemC time, to a Sink. The controller (top.cpp) calls begin_case()
+// before a train and end_case() after it, from its own thread; both may
+// wait() (bus accesses, reset).
+//
+//   model   the golden model (model/interp), one step per rising edge
+//   rtl     interp_top (rtl/interp) Verilated for SystemC, 50 MHz, command
+//           on its pin, moves pushed over Wishbone, step/dir pins observed
+//   iss     the 8085 program (sw8085/interp) on the C++ ISS, T-state timed
+//           at 3 MHz, command on RST 7.5 (sw8085::Host does the board)
+//   8085    board8085 (rtl/board8085 + rtl/cpu8085) Verilated for SystemC,
+//           3 MHz, command on RST 7.5 (synchronised), moves written through
+//           the mailbox port, step pins observed
+#pragma once
+
+#include <systemc>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cases.hpp"
+#include "scoreboard.hpp"
+
+class Vcosim_interp;
+class Vcosim_board;
+class VerilatedFstSc;
+
+namespace contour::sw8085 {
+class Host;
+struct SlotMove;
+struct Codes;
+}  // namespace contour::sw8085
+
+namespace contour::cosim {
+
+// Receives an engine's output pulses.
+class Sink {
+ public:
+  virtual ~Sink() = default;
+  virtual void pulse(const Pulse& p, const std::string& state) = 0;
+};
+
+// Records pulses with their time since the case started.
+class Recorder final : public Sink {
+ public:
+  void start(sc_core::sc_time t0) {
+    t0_ = t0;
+    out.clear();
+  }
+  void pulse(const Pulse& p, const std::string& state) override {
+    out.push_back({(sc_core::sc_time_stamp() - t0_).to_seconds() * 1e6, p, state});
+  }
+  std::vector<OutPulse> out;
+
+ private:
+  sc_core::sc_time t0_;
+};
+
+// Test-only hook: corrupts an engine's output stream on its way to the
+// scoreboard, to prove the scoreboard catches it. The pulse numbers are
+// 1-based, counted per case.
+struct Fault {
+  enum class Kind { Drop, Swap, Flip };
+  std::string engine;
+  Kind kind = Kind::Drop;
+  std::uint64_t at = 1;  // Drop: pulse `at` vanishes; Swap: `at` and `at+1`; Flip: sign of `at`
+};
+// "ENGINE:drop:N", "ENGINE:swap:N", "ENGINE:flip:N". Throws std::invalid_argument.
+Fault parse_fault(const std::string& text);
+
+class FaultInjector final : public Sink {
+ public:
+  FaultInjector(Fault f, Sink& next) : fault_(std::move(f)), next_(next) {}
+  void reset() {
+    n_ = 0;
+    held_.reset();
+  }
+  void pulse(const Pulse& p, const std::string& state) override;
+
+ private:
+  Fault fault_;
+  Sink& next_;
+  std::uint64_t n_ = 0;
+  std::optional<std::pair<Pulse, std::string>> held_;
+};
+
+class CosimEngine : public sc_core::sc_module {
+ public:
+  sc_core::sc_in<bool> i_cmd;
+  explicit CosimEngine(sc_core::sc_module_name n) : sc_core::sc_module(n), i_cmd("i_cmd") {}
+  virtual std::string engine() const = 0;
+  virtual void begin_case(const Case& c) = 0;
+  // Stops the engine's host activity and fills the run's counters and
+  // position (the pulses are in the Recorder).
+  virtual void end_case(EngineRun& run) = 0;
+  virtual void open_trace(const std::string&) {}
+  virtual void close_trace() {}
+  void set_sink(Sink* s) { sink_ = s; }
+
+ protected:
+  void emit(const Pulse& p, const std::string& state = "") {
+    if (sink_) sink_->pulse(p, state);
+  }
+  Sink* sink_ = nullptr;
+};
+
+// --- model -----------------------------------------------------------------
+
+class ModelEngine final : public CosimEngine {
+ public:
+  SC_HAS_PROCESS(ModelEngine);
+  explicit ModelEngine(sc_core::sc_module_name n);
+  std::string engine() const override { return "model"; }
+  void begin_case(const Case& c) override;
+  void end_case(EngineRun& run) override;
+
+ private:
+  void on_cmd();
+  bool start_next();
+  std::vector<Placed> moves_;
+  std::size_t next_ = 0;
+  std::optional<Linear<24>> lin_;
+  std::optional<Circular<24>> circ_;
+  const Placed* cur_ = nullptr;
+  bool active_ = false;
+};
+
+// --- rtl: interp_top ---------------------------------------------------------
+
+// Output stage timing of interp_top, in core clocks (STEP_LEN etc.).
+struct StepTiming {
+  std::uint32_t len = 50, space = 50, setup = 10, hold = 10;  // 1 us / 1 us / 200 ns / 200 ns at 50 MHz
+};
+
+class CoreEngine final : public CosimEngine {
+ public:
+  SC_HAS_PROCESS(CoreEngine);
+  CoreEngine(sc_core::sc_module_name n, double f_clk_hz, StepTiming timing, bool free_clock);
+  ~CoreEngine() override;
+  std::string engine() const override { return "rtl"; }
+  void begin_case(const Case& c) override;
+  void end_case(EngineRun& run) override;
+  void open_trace(const std::string& path) override;
+  void close_trace() override;
+  std::uint64_t clocks() const { return clocks_; }
+
+ private:
+  void clock_thread();
+  void on_cmd();
+  void on_step();
+  void keep_awake(std::uint64_t cycles);
+  void wb_write(std::uint32_t adr, std::uint32_t v);
+  std::uint32_t wb_read(std::uint32_t adr);
+  void wb_cycle(bool we, std::uint32_t adr, std::uint32_t v, std::uint32_t* out);
+
+  sc_core::sc_time period_;
+  StepTiming timing_;
+  bool free_clock_;
+  std::uint64_t awake_cycles_;
+  sc_core::sc_time run_until_;
+  sc_core::sc_event wake_;
+  std::uint64_t clocks_ = 0;
+  sc_core::sc_signal<bool> clk_{"clk"}, rst_{"rst"}, cyc_{"cyc"}, stb_{"stb"}, we_{"we"}, ack_{"ack"};
+  sc_core::sc_signal<std::uint32_t> adr_{"adr"}, wdat_{"wdat"}, rdat_{"rdat"};
+  sc_core::sc_signal<bool> step_x_{"step_x"}, dir_x_{"dir_x"}, step_y_{"step_y"}, dir_y_{"dir_y"};
+  sc_core::sc_signal<bool> pulse_{"pulse"}, pulse_y_{"pulse_y"}, pulse_neg_{"pulse_neg"}, busy_{"busy"};
+  std::unique_ptr<Vcosim_interp> top_;
+  std::unique_ptr<VerilatedFstSc> trace_;
+  bool last_x_ = false, last_y_ = false;
+  std::vector<Placed> moves_;
+};
+
+// --- iss: the program on the C++ ISS ----------------------------------------
+
+class IssEngine final : public CosimEngine {
+ public:
+  SC_HAS_PROCESS(IssEngine);
+  IssEngine(sc_core::sc_module_name n, double f_clk_hz);
+  ~IssEngine() override;
+  std::string engine() const override { return "iss"; }
+  void begin_case(const Case& c) override;
+  void end_case(EngineRun& run) override;
+
+ private:
+  void cpu_thread();
+  void on_cmd();
+  void feed();
+  void collect();
+  int active_move() const;  // index of the move the program started last, -1: none
+  sc_core::sc_time period_;
+  std::unique_ptr<sw8085::Host> host_;
+  std::vector<Placed> moves_;
+  std::size_t next_move_ = 0;
+  int next_slot_ = 0;
+  std::vector<std::unique_ptr<sw8085::SlotMove>> queued_;  // in queue order
+  std::array<int, 2> slot_move_{-1, -1};                   // index into queued_ per slot
+  std::uint64_t pulses_ = 0;
+  bool edge_ = false;
+  bool active_ = false, parked_ = true;
+  std::string error_;
+  sc_core::sc_event rise_, started_, stop_, parked_ev_;
+};
+
+// --- 8085: board8085 ---------------------------------------------------------
+
+class BoardEngine final : public CosimEngine {
+ public:
+  SC_HAS_PROCESS(BoardEngine);
+  BoardEngine(sc_core::sc_module_name n, double f_clk_hz, const std::string& rom_memh);
+  ~BoardEngine() override;
+  std::string engine() const override { return "8085"; }
+  void begin_case(const Case& c) override;
+  void end_case(EngineRun& run) override;
+  void open_trace(const std::string& path) override;
+  void close_trace() override;
+
+ private:
+  void host_thread();
+  void on_clk();
+  void on_step();
+  void poke(std::uint8_t addr, std::uint8_t v);
+  std::uint8_t peek(std::uint8_t addr);
+  void queue_next();
+  bool slot_free(int i);
+
+  sc_core::sc_clock clk_;
+  sc_core::sc_signal<bool> rst_{"rst"}, cmd_sync_{"cmd_sync"}, zero_{"zero"};
+  sc_core::sc_signal<std::uint32_t> intr_vec_{"intr_vec"}, host_addr_{"host_addr"}, host_wdata_{"host_wdata"};
+  sc_core::sc_signal<bool> host_we_{"host_we"};
+  sc_core::sc_signal<bool> step_x_{"step_x"}, step_y_{"step_y"}, step_z_{"step_z"}, dir_x_{"dir_x"},
+      dir_y_{"dir_y"}, dir_z_{"dir_z"}, debug_we_{"debug_we"}, host_ovr_{"host_ovr"}, cpu_wr_{"cpu_wr"},
+      cpu_io_{"cpu_io"}, retire_{"retire"}, halted_{"halted"}, ie_{"ie"}, sod_{"sod"};
+  sc_core::sc_signal<std::uint32_t> done_{"done"}, debug_{"debug"}, host_rdata_{"host_rdata"}, cpu_dout_{"cpu_dout"},
+      dbg_kind_{"dbg_kind"}, dbg_irq_{"dbg_irq"}, dbg_op_{"dbg_op"}, cpu_addr_{"cpu_addr"}, dbg_ipc_{"dbg_ipc"},
+      dbg_pc_{"dbg_pc"}, dbg_sp_{"dbg_sp"};
+  sc_core::sc_signal<std::uint64_t> dbg_regs_{"dbg_regs"};
+  std::unique_ptr<Vcosim_board> top_;
+  std::unique_ptr<VerilatedFstSc> trace_;
+  std::unique_ptr<sw8085::Codes> codes_;
+  std::vector<Placed> moves_;
+  std::size_t next_move_ = 0;
+  int next_slot_ = 0;
+  std::vector<std::unique_ptr<sw8085::SlotMove>> queued_;
+  std::array<int, 2> slot_move_{-1, -1};
+  // Every host port access happens in host_thread; the controller asks.
+  enum class Request { None, Begin, End };
+  Request request_ = Request::None;
+  sc_core::sc_event request_ev_, reply_;
+  std::array<std::uint8_t, 256> final_mailbox_{};
+  bool active_ = false;  // the host refills slots
+  std::string error_;
+  bool last_x_ = false, last_y_ = false;
+};
+
+// Writes the built-in program's ROM image as a $readmemh file (8192 lines).
+void write_rom_memh(const std::string& path);
+
+}  // namespace contour::cosim

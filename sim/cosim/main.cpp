@@ -1,0 +1,43 @@
+// contour-cosim: the SystemC co-simulation program (docs/cosim.md). The CLI's
+// `contour cosim` runs it with the same arguments.
+#include <systemc>
+
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+
+#include "options.hpp"
+#include "report.hpp"
+#include "top.hpp"
+
+int sc_main(int argc, char** argv) {
+  using namespace contour::cosim;
+  ::setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);  // stdout is the report's summary
+  std::vector<std::string> args(argv + 1, argv + argc);
+  Options opt;
+  try {
+    bool help = false;
+    opt = parse_options(args, help);
+    if (help) {
+      std::fputs(usage().c_str(), stdout);
+      return 0;
+    }
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "contour cosim: %s\n", e.what());
+    return 2;
+  }
+  try {
+    const Outcome out = run_cosim(opt);
+    std::printf("%s\n", verdict_line(out.rows).c_str());
+    for (const auto& r : out.rows)
+      if (!r.passed())
+        std::printf("FAIL %s %s @ %s pps: %s\n", r.case_name.c_str(), r.engine.c_str(), rate_label(r.rate_pps).c_str(),
+                    r.note.c_str());
+    for (const auto& f : out.files) std::printf("wrote %s\n", f.c_str());
+    std::fflush(stdout);
+    return out.ok() ? 0 : 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "contour cosim: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,411 @@
+#include "report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "plot/svg.hpp"
+#include "top.hpp"
+
+namespace contour::cosim {
+
+namespace {
+
+using plot::escape;
+
+const std::map<std::string, std::string>& engine_colors() {
+  static const std::map<std::string, std::string> c = {
+      {"model", "#444444"}, {"rtl", "#1f77b4"}, {"iss", "#2ca02c"}, {"8085", "#d62728"}};
+  return c;
+}
+
+std::string engine_title(const std::string& e) {
+  if (e == "model") return "model (golden C++ in an SC_MODULE)";
+  if (e == "rtl") return "rtl (Verilog core interp_top, Verilated --sc)";
+  if (e == "iss") return "iss (8085 program on the C++ ISS)";
+  if (e == "8085") return "8085 (8085 program on the Verilog board8085, Verilated --sc)";
+  return e;
+}
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+std::string json_str(const std::string& s) {
+  std::string o = "\"";
+  for (char c : s) {
+    switch (c) {
+      case '"': o += "\\\""; break;
+      case '\\': o += "\\\\"; break;
+      case '\n': o += "\\n"; break;
+      case '\t': o += "\\t"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) o += fmt("\\u%04x", static_cast<unsigned char>(c));
+        else o += c;
+    }
+  }
+  return o + "\"";
+}
+
+std::string xml_attr(const std::string& s) { return escape(s); }
+
+// The ideal contour of a case as a polyline (arcs sampled).
+std::vector<plot::Point> ideal_path(const Case& c) {
+  std::vector<plot::Point> pts;
+  for (const auto& p : place(c.moves)) {
+    if (pts.empty()) pts.push_back({double(p.start_x), double(p.start_y)});
+    if (!p.move.is_arc()) {
+      pts.push_back({double(p.end_x), double(p.end_y)});
+      continue;
+    }
+    const Move& m = p.move;
+    const double r = std::hypot(double(m.xs), double(m.ys));
+    const double a0 = std::atan2(double(m.ys), double(m.xs)), a1 = std::atan2(double(m.ye), double(m.xe));
+    const double two_pi = 2 * std::numbers::pi;
+    double span = m.sense == Sense::CCW ? a1 - a0 : a0 - a1;
+    span = std::fmod(span + 2 * two_pi, two_pi);
+    if (span < 1e-9) span = two_pi;  // start = end: a full circle
+    const int n = std::max(16, static_cast<int>(span * r));
+    for (int i = 1; i <= n; ++i) {
+      const double a = a0 + (m.sense == Sense::CCW ? 1 : -1) * span * i / n;
+      pts.push_back({p.origin_x + r * std::cos(a), p.origin_y + r * std::sin(a)});
+    }
+    pts.back() = {double(p.end_x), double(p.end_y)};
+  }
+  return pts;
+}
+
+std::vector<plot::Point> pulse_path(const std::vector<Pulse>& pulses) {
+  std::vector<plot::Point> pts{{0, 0}};
+  double x = 0, y = 0;
+  for (const auto& p : pulses) {
+    (p.axis == Axis::X ? x : y) += p.sign;
+    pts.push_back({x, y});
+  }
+  return pts;
+}
+
+std::string path_svg(const Case& c, const Expected& e, const std::vector<const Row*>& diverged) {
+  plot::Plot pl;
+  pl.title = c.name + ": output pulses over the ideal contour";
+  pl.x_label = "X (pulses)";
+  pl.y_label = "Y (pulses)";
+  pl.equal_aspect = true;
+  pl.width = 520;
+  pl.height = 440;
+  pl.series.push_back({"ideal contour", "#999999", ideal_path(c), 2.0, true, false});
+  pl.series.push_back({"model pulses (= every agreeing engine)", "#1f77b4", pulse_path(e.pulses), 1.5, false,
+                       e.pulses.size() <= 200});
+  std::set<std::string> shown;
+  for (const Row* r : diverged) {
+    if (!shown.insert(r->engine).second) continue;
+    pl.series.push_back({r->engine + " @ " + rate_label(r->rate_pps) + " (diverged)", "#d62728", pulse_path(r->path),
+                         1.5, false, r->path.size() <= 200});
+  }
+  return plot::render(pl);
+}
+
+std::string deviation_svg(const Case& c, const Expected& e) {
+  const auto placed = place(c.moves);
+  plot::Plot pl;
+  pl.title = c.name + ": distance from the ideal contour";
+  pl.x_label = "output pulse";
+  pl.y_label = "deviation (pulses)";
+  pl.width = 520;
+  pl.height = 440;
+  plot::Series s{"model pulse path", "#1f77b4", {}, 1.5, false, e.pulses.size() <= 200};
+  for (std::size_t i = 0; i < e.pulses.size(); ++i) {
+    const Placed& p = placed[e.move_of[i]];
+    const double d = deviation(p.move, e.pos[i + 1].first - p.origin_x, e.pos[i + 1].second - p.origin_y);
+    s.points.push_back({double(i + 1), d});
+  }
+  pl.series.push_back(s);
+  pl.series.push_back({"bound: 1 pulse", "#999999", {{1, 1}, {double(std::max<std::size_t>(e.pulses.size(), 2)), 1}},
+                       1.0, true, false});
+  pl.series.push_back({"", "#ffffff", {{1, 0}}, 0.1, false, false});  // keep 0 in view
+  return plot::render(pl);
+}
+
+std::string lost_svg(const std::string& case_name, const std::vector<Row>& rows) {
+  plot::Plot pl;
+  pl.title = case_name + ": command pulses lost vs command rate";
+  pl.x_label = "command rate (pulses/s)";
+  pl.y_label = "lost (% of command pulses)";
+  pl.log_x = true;
+  pl.width = 520;
+  pl.height = 380;
+  for (const auto& e : engine_names()) {
+    plot::Series s{e, engine_colors().at(e), {}, 2.0, e == "iss", true};
+    for (const auto& r : rows)
+      if (r.case_name == case_name && r.engine == e && r.commands > 0)
+        s.points.push_back({r.rate_pps, 100.0 * double(r.lost) / double(r.commands)});
+    if (!s.points.empty()) pl.series.push_back(s);
+  }
+  return plot::render(pl);
+}
+
+std::string css() {
+  return R"(body{font-family:system-ui,Segoe UI,Helvetica,Arial,sans-serif;margin:24px;color:#222;max-width:1150px}
+h1{font-size:26px;margin:0 0 6px 0;padding:10px 14px;border-radius:6px}
+h1.pass{background:#e3f4e3;color:#1a6b1a}h1.fail{background:#fbe3e3;color:#a01818}
+h2{margin-top:34px;border-bottom:1px solid #ccc;padding-bottom:4px}h3{margin-bottom:6px}
+table{border-collapse:collapse;margin:8px 0 16px 0;font-size:13px}
+th,td{border:1px solid #ccc;padding:3px 7px;text-align:right}th{background:#f2f2f2}
+td.l,th.l{text-align:left}
+td.PASS{background:#e3f4e3}td.FLAGGED{background:#fff3cd}td.FAIL{background:#f8d0d0;font-weight:bold}td.na{color:#aaa}
+pre{background:#f7f7f7;border:1px solid #ddd;padding:8px;font-size:12px;overflow-x:auto}
+.plots{display:flex;flex-wrap:wrap;gap:12px}.plots svg{border:1px solid #eee;background:#fff}
+.meta{color:#555;font-size:13px}code{background:#f2f2f2;padding:1px 4px}
+)";
+}
+
+std::string cell_text(const Row& r) {
+  std::string t = r.verdict;
+  if (r.lost > 0 || r.overruns > 0) t += " " + std::to_string(r.lost) + "/" + std::to_string(r.overruns);
+  if (r.mismatches > 0) t += " &#8800;" + std::to_string(r.mismatches);
+  return t;
+}
+
+}  // namespace
+
+std::string verdict_line(const std::vector<Row>& rows) {
+  std::size_t pass = 0, fail = 0;
+  for (const auto& r : rows) (r.passed() ? pass : fail)++;
+  const double pct = rows.empty() ? 0.0 : 100.0 * double(pass) / double(rows.size());
+  return fmt("%.2f%%", pct) + (fail == 0 && pass > 0 ? " PASS " : " FAIL ") + std::to_string(pass) + " PASSED, " +
+         std::to_string(fail) + " FAILED";
+}
+
+Limit limit_of(const std::vector<Row>& rows, const std::string& case_name, const std::string& engine) {
+  Limit l;
+  std::vector<const Row*> rs;
+  for (const auto& r : rows)
+    if (r.case_name == case_name && r.engine == engine) rs.push_back(&r);
+  std::sort(rs.begin(), rs.end(), [](const Row* a, const Row* b) { return a->rate_pps < b->rate_pps; });
+  for (const Row* r : rs) {
+    if (r->lost == 0 && r->mismatches == 0) {
+      if (l.first_loss == 0) l.agree_up_to = r->rate_pps;
+    } else if (l.first_loss == 0) {
+      l.first_loss = r->rate_pps;
+    }
+  }
+  return l;
+}
+
+std::vector<std::string> write_reports(const std::string& dir, const ReportInput& in) {
+  std::vector<std::string> written;
+  const std::string verdict = verdict_line(in.rows);
+  const bool ok = verdict.find(" PASS ") != std::string::npos;
+  std::vector<std::string> engines;
+  for (const auto& e : engine_names())
+    for (const auto& r : in.rows)
+      if (r.engine == e) {
+        engines.push_back(e);
+        break;
+      }
+
+  // --- report.json ---------------------------------------------------------------
+  {
+    std::ostringstream j;
+    std::size_t pass = 0, fail = 0;
+    for (const auto& r : in.rows) (r.passed() ? pass : fail)++;
+    j << "{\n  \"verdict\": " << json_str(verdict) << ",\n  \"suite\": " << json_str(in.suite)
+      << ",\n  \"passed\": " << pass << ",\n  \"failed\": " << fail << ",\n  \"command\": " << json_str(in.command)
+      << ",\n  \"sim_seconds\": " << fmt("%.6f", in.sim_seconds) << ",\n  \"results\": [\n";
+    for (std::size_t i = 0; i < in.rows.size(); ++i) {
+      const Row& r = in.rows[i];
+      j << "    {\"case\": " << json_str(r.case_name) << ", \"engine\": " << json_str(r.engine)
+        << ", \"rate_pps\": " << fmt("%.0f", r.rate_pps) << ", \"pulses\": " << r.pulses
+        << ", \"mismatches\": " << r.mismatches << ", \"lost\": " << r.lost << ", \"overruns\": " << r.overruns
+        << ", \"verdict\": " << json_str(r.verdict) << ", \"expected\": " << r.expected
+        << ", \"commands\": " << r.commands << ", \"required\": " << (r.required ? "true" : "false");
+      if (r.has_latency)
+        j << ", \"latency_us\": {\"min\": " << fmt("%.4f", r.lat_min_us) << ", \"mean\": " << fmt("%.4f", r.lat_mean_us)
+          << ", \"max\": " << fmt("%.4f", r.lat_max_us) << ", \"exact\": " << (r.latency_exact ? "true" : "false")
+          << "}";
+      else
+        j << ", \"latency_us\": null";
+      if (r.divergence)
+        j << ", \"first_divergence\": {\"pulse\": " << r.divergence->index
+          << ", \"summary\": " << json_str(r.divergence->summary) << "}";
+      else
+        j << ", \"first_divergence\": null";
+      j << ", \"note\": " << json_str(r.note) << "}" << (i + 1 < in.rows.size() ? "," : "") << "\n";
+    }
+    j << "  ],\n  \"limits\": [\n";
+    bool first = true;
+    for (const auto& c : in.cases)
+      for (const auto& e : engines) {
+        const Limit l = limit_of(in.rows, c.name, e);
+        j << (first ? "" : ",\n") << "    {\"case\": " << json_str(c.name) << ", \"engine\": " << json_str(e)
+          << ", \"agrees_up_to_pps\": " << fmt("%.0f", l.agree_up_to) << ", \"first_loss_pps\": "
+          << (l.first_loss > 0 ? fmt("%.0f", l.first_loss) : std::string("null")) << "}";
+        first = false;
+      }
+    j << "\n  ]\n}\n";
+    const std::string path = dir + "/report.json";
+    std::ofstream f(path);
+    f << j.str();
+    if (!f) throw std::runtime_error(path + ": write failed");
+    written.push_back(path);
+  }
+
+  // --- junit.xml ---------------------------------------------------------------------
+  {
+    std::ostringstream x;
+    std::size_t fail = 0;
+    for (const auto& r : in.rows) fail += !r.passed();
+    x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"contour cosim\" tests=\"" << in.rows.size()
+      << "\" failures=\"" << fail << "\">\n  <testsuite name=\"cosim." << xml_attr(in.suite) << "\" tests=\""
+      << in.rows.size() << "\" failures=\"" << fail << "\" time=\"" << fmt("%.3f", in.wall_seconds) << "\">\n";
+    for (const auto& r : in.rows) {
+      x << "    <testcase classname=\"cosim." << xml_attr(in.suite + "." + r.case_name) << "\" name=\""
+        << xml_attr(r.engine + "@" + rate_label(r.rate_pps)) << "\"";
+      if (r.passed()) {
+        x << ">";
+        if (!r.note.empty()) x << "<system-out>" << escape(r.note) << "</system-out>";
+        x << "</testcase>\n";
+      } else {
+        x << ">\n      <failure message=\"" << xml_attr(r.note) << "\">"
+          << escape(r.divergence ? r.divergence->context : r.note) << "</failure>\n    </testcase>\n";
+      }
+    }
+    x << "  </testsuite>\n</testsuites>\n";
+    const std::string path = dir + "/junit.xml";
+    std::ofstream f(path);
+    f << x.str();
+    if (!f) throw std::runtime_error(path + ": write failed");
+    written.push_back(path);
+  }
+
+  // --- report.html ----------------------------------------------------------------------
+  std::ostringstream h;
+  h << "<!-- " << verdict << " -->\n<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+    << "<title>contour cosim " << escape(in.suite) << ": " << escape(verdict) << "</title><style>" << css()
+    << "</style></head><body>\n";
+  h << "<h1 class=\"" << (ok ? "pass" : "fail") << "\">" << escape(verdict) << "</h1>\n";
+  h << "<p class=\"meta\">Suite <b>" << escape(in.suite) << "</b>: " << in.cases.size() << " case(s) &times; "
+    << in.rates.size() << " rate(s), engines " ;
+  for (std::size_t i = 0; i < engines.size(); ++i) h << (i ? ", " : "") << "<b>" << escape(engines[i]) << "</b>";
+  h << ". Simulated " << fmt("%.3f", in.sim_seconds) << " s of SystemC time in " << fmt("%.1f", in.wall_seconds)
+    << " s.<br>Command: <code>" << escape(in.command) << "</code><br>"
+    << "Clocks: core " << fmt("%g", in.opt.core_hz / 1e6) << " MHz (output stage STEP_LEN " << in.opt.timing.len
+    << ", STEP_SPACE " << in.opt.timing.space << ", DIR_SETUP " << in.opt.timing.setup << ", DIR_HOLD "
+    << in.opt.timing.hold << " clocks), 8085 " << fmt("%g", in.opt.cpu_hz / 1e6) << " MHz. "
+    << "The 8085 engines run up to " << rate_label(kMaxRate8085) << " pps.</p>\n";
+
+  h << "<h2>How to read this</h2><p class=\"meta\">Every engine gets the same command pulse train (N pulses at the "
+       "rate, N = the model's output pulse count). Its output pulses are compared one by one with the golden "
+       "model's (axis, sign, order); <b>lost</b> = command pulses that gave no output pulse, <b>overruns</b> = the "
+       "ones the engine itself flagged (core: OVR_COUNT; 8085 program: the mailbox overrun count). "
+       "<b>PASS</b>: identical pulses, nothing lost. <b>FLAGGED</b>: the pulses given are the model's, and every "
+       "lost command pulse was flagged (allowed above an engine's limit). <b>FAIL</b>: a pulse differs, a loss was "
+       "not flagged, the final position is wrong, or an engine lost pulses where it must keep up (the core up to "
+       + rate_label(kCoreRequiredRate) + " pps, the 8085 up to " + rate_label(kRequiredRate8085) +
+       " pps). Cells read <i>verdict lost/overruns</i>.</p>\n";
+
+  // Limits.
+  h << "<h2>Where each engine falls behind</h2>\n<table><tr><th class=\"l\">case</th>";
+  for (const auto& e : engines) h << "<th>" << escape(e) << ": agrees up to</th><th>first loss</th>";
+  h << "</tr>\n";
+  for (const auto& c : in.cases) {
+    h << "<tr><td class=\"l\">" << escape(c.name) << "</td>";
+    for (const auto& e : engines) {
+      const Limit l = limit_of(in.rows, c.name, e);
+      h << "<td>" << (l.agree_up_to > 0 ? rate_label(l.agree_up_to) + " pps" : "-") << "</td><td>"
+        << (l.first_loss > 0 ? rate_label(l.first_loss) + " pps" : "none") << "</td>";
+    }
+    h << "</tr>\n";
+  }
+  h << "</table>\n<p class=\"meta\">Paper A (Table 1): the 8085 at 3 MHz kept up to 4.0 kpps (linear) and 3.0 kpps "
+       "(circular); a dedicated processor was expected to reach 250 kpps.</p>\n";
+
+  h << "<div class=\"plots\">\n";
+  for (const auto& c : in.cases) h << lost_svg(c.name, in.rows) << "\n";
+  h << "</div>\n";
+
+  // Failures.
+  std::vector<const Row*> failed;
+  for (const auto& r : in.rows)
+    if (!r.passed()) failed.push_back(&r);
+  h << "<h2>Failures (" << failed.size() << ")</h2>\n";
+  if (failed.empty()) h << "<p>None.</p>\n";
+  for (const Row* r : failed) {
+    h << "<h3>" << escape(r->case_name) << " on " << escape(r->engine) << " at " << rate_label(r->rate_pps)
+      << " pps</h3><p>" << escape(r->note) << "</p>\n";
+    if (r->divergence) h << "<pre>" << escape(r->divergence->context) << "</pre>\n";
+  }
+
+  // Per case.
+  h << "<h2>Cases</h2>\n";
+  for (std::size_t ci = 0; ci < in.cases.size(); ++ci) {
+    const Case& c = in.cases[ci];
+    h << "<h3 id=\"" << escape(c.name) << "\">" << escape(c.name) << ": " << escape(c.title) << "</h3>\n<p class=\"meta\">";
+    for (std::size_t i = 0; i < c.moves.size(); ++i) h << (i ? ", " : "") << "<code>" << escape(describe(c.moves[i])) << "</code>";
+    h << "; " << in.exps[ci].pulses.size() << " output pulses.</p>\n<table><tr><th>rate (pps)</th>";
+    for (const auto& e : engines) h << "<th>" << escape(e) << "</th>";
+    h << "<th>rtl latency (us)</th><th>8085 latency (us)</th></tr>\n";
+    for (double rate : in.rates) {
+      h << "<tr><td>" << rate_label(rate) << "</td>";
+      const Row* lat[2] = {nullptr, nullptr};
+      for (const auto& e : engines) {
+        const Row* found = nullptr;
+        for (const auto& r : in.rows)
+          if (r.case_name == c.name && r.engine == e && r.rate_pps == rate) found = &r;
+        if (!found) {
+          h << "<td class=\"na\">-</td>";
+          continue;
+        }
+        if (e == "rtl") lat[0] = found;
+        if (e == "8085") lat[1] = found;
+        h << "<td class=\"" << found->verdict << "\" title=\"" << xml_attr(found->note) << "\">" << cell_text(*found)
+          << "</td>";
+      }
+      for (const Row* r : lat) {
+        if (r && r->has_latency)
+          h << "<td>" << fmt("%.3f", r->lat_min_us) << " / " << fmt("%.3f", r->lat_mean_us) << " / "
+            << fmt("%.3f", r->lat_max_us) << (r->latency_exact ? "" : "*") << "</td>";
+        else
+          h << "<td class=\"na\">-</td>";
+      }
+      h << "</tr>\n";
+    }
+    h << "</table>\n<p class=\"meta\">Latency: min / mean / max from a command pulse's rising edge to its output "
+         "step pulse; * = pulses were lost, measured from the latest command pulse.</p>\n";
+    std::vector<const Row*> diverged;
+    for (const auto& r : in.rows)
+      if (r.case_name == c.name && r.divergence) diverged.push_back(&r);
+    h << "<div class=\"plots\">" << path_svg(c, in.exps[ci], diverged) << deviation_svg(c, in.exps[ci]) << "</div>\n";
+  }
+
+  // Everything, for the record.
+  h << "<h2>All results</h2>\n<details><summary>" << in.rows.size()
+    << " rows (case, engine, rate)</summary><table><tr><th class=\"l\">case</th><th class=\"l\">engine</th>"
+       "<th>rate</th><th>commands</th><th>pulses</th><th>mismatches</th><th>lost</th><th>overruns</th>"
+       "<th>verdict</th><th class=\"l\">note</th></tr>\n";
+  for (const auto& r : in.rows)
+    h << "<tr><td class=\"l\">" << escape(r.case_name) << "</td><td class=\"l\">" << escape(r.engine) << "</td><td>"
+      << rate_label(r.rate_pps) << "</td><td>" << r.commands << "</td><td>" << r.pulses << "</td><td>" << r.mismatches
+      << "</td><td>" << r.lost << "</td><td>" << (r.overruns < 0 ? std::string("-") : std::to_string(r.overruns))
+      << "</td><td class=\"" << r.verdict << "\">" << r.verdict << "</td><td class=\"l\">" << escape(r.note)
+      << "</td></tr>\n";
+  h << "</table></details>\n<h2>Engines</h2><ul>";
+  for (const auto& e : engines) h << "<li>" << escape(engine_title(e)) << "</li>";
+  h << "</ul>\n</body></html>\n";
+  const std::string path = dir + "/report.html";
+  std::ofstream f(path);
+  f << h.str();
+  if (!f) throw std::runtime_error(path + ": write failed");
+  written.push_back(path);
+  return written;
+}
+
+}  // namespace contour::cosim

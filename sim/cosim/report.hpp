@@ -1,0 +1,40 @@
+// The co-simulation reports: report.html (verdict line first, tables, the
+// first divergences, inline SVG plots), report.json and junit.xml.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cases.hpp"
+#include "scoreboard.hpp"
+
+namespace contour::cosim {
+
+struct Options;
+
+struct ReportInput {
+  std::string suite;
+  const std::vector<Case>& cases;
+  const std::vector<Expected>& exps;
+  const std::vector<double>& rates;
+  const std::vector<Row>& rows;
+  std::string command;
+  double sim_seconds = 0, wall_seconds = 0;
+  const Options& opt;
+};
+
+// "100.00% PASS 40 PASSED, 0 FAILED" (or "... FAIL ..."): the first line of
+// every report and of the program's output.
+std::string verdict_line(const std::vector<Row>& rows);
+
+// The highest rate of the sweep at which `engine` lost nothing on `case_name`
+// and the lowest at which it lost pulses (0 when there is none).
+struct Limit {
+  double agree_up_to = 0, first_loss = 0;
+};
+Limit limit_of(const std::vector<Row>& rows, const std::string& case_name, const std::string& engine);
+
+// Writes DIR/report.html, DIR/report.json and DIR/junit.xml; returns the paths.
+std::vector<std::string> write_reports(const std::string& dir, const ReportInput& in);
+
+}  // namespace contour::cosim

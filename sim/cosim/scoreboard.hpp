@@ -1,0 +1,82 @@
+// The scoreboard: what each engine put out during one case at one command
+// rate, compared pulse by pulse (axis, sign, order) and by final position
+// with the golden model, plus the latency from each command pulse to its
+// output pulse, pulses lost and overruns flagged. Pure C++: no SystemC, so
+// that its rules are tested on their own.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cases.hpp"
+#include "interp/engine.hpp"
+
+namespace contour::cosim {
+
+// One output pulse as an engine emitted it.
+struct OutPulse {
+  double t_us = 0;    // simulated time, microseconds since the case started
+  Pulse pulse;
+  std::string state;  // the engine's state after it, when observable ("" otherwise)
+};
+
+// What an engine did during one case.
+struct EngineRun {
+  std::string engine;
+  std::vector<OutPulse> out;
+  bool overruns_known = false;  // the engine counts the command pulses it refused
+  std::int64_t overruns = 0;
+  bool position_known = false;  // the engine reports its own position at the end
+  std::int64_t x = 0, y = 0;    // absolute, on the case's path
+  std::string error;            // a simulation error (bus fault, timeout, ...)
+};
+
+// The golden model's answer for a case: every pulse, the state after it and
+// the absolute position after it (pos[0] is the start).
+struct Expected {
+  std::vector<Pulse> pulses;
+  std::vector<std::string> states;
+  std::vector<std::size_t> move_of;  // index of the move each pulse belongs to
+  std::vector<std::pair<std::int64_t, std::int64_t>> pos;
+};
+Expected expect(const Case& c);
+
+struct Divergence {
+  std::uint64_t index = 0;  // 1-based output pulse number
+  std::string summary;      // one line: "pulse 3: model +X, rtl +Y"
+  std::string context;      // a window of pulses on both sides, one per line
+};
+
+// One line of the report: a case on an engine at a rate.
+struct Row {
+  std::string case_name, engine;
+  double rate_pps = 0;
+  std::uint64_t commands = 0;   // command pulses sent
+  std::uint64_t expected = 0;   // output pulses of the model
+  std::uint64_t pulses = 0;     // output pulses of the engine
+  std::uint64_t mismatches = 0; // pulses that differ from the model's, extra pulses included
+  std::uint64_t lost = 0;       // command pulses that gave no output pulse
+  std::int64_t overruns = -1;   // flagged by the engine (-1: it has no counter)
+  bool required = false;        // this engine must lose nothing at this rate
+  std::string verdict;          // PASS, FLAGGED (losses, each flagged), FAIL
+  std::string note;
+  bool has_latency = false;
+  bool latency_exact = false;   // every output paired with its own command
+  double lat_min_us = 0, lat_mean_us = 0, lat_max_us = 0;
+  std::optional<Divergence> divergence;
+  std::vector<Pulse> path;      // the engine's pulses, kept when it diverged (for the plot)
+  bool passed() const { return verdict == "PASS" || verdict == "FLAGGED"; }
+};
+
+// Whether `engine` must lose nothing at `rate` (the model and the core up
+// to 250 kpps; the 8085 engines up to kRequiredRate8085).
+inline constexpr double kRequiredRate8085 = 1e3;
+bool loss_forbidden(const std::string& engine, double rate_pps);
+
+// Judges one engine's run: `cmd_us` are the times of the command pulses.
+Row judge(const Case& c, const Expected& exp, double rate_pps, const std::vector<double>& cmd_us,
+          const EngineRun& run);
+
+}  // namespace contour::cosim
