@@ -60,8 +60,11 @@ module blk_prep #(
   assign o_co = co0;
   assign o_sub = i_arc ? {cin0_m1, 1'b1} : {1'b0, i_ye};
   assign o_add = i_arc ? {cout0, 1'b1} : {1'b0, i_xe};
-  assign o_ti1 = i_arc ? ti + 1'b1 : ti - 1'b1;
-  assign o_ti2 = i_arc ? ti + two : ti - two;
+  // ti + 1 / ti + 2 (arc: ci counts down to ti), ti - 1 / ti - 2 (line).
+  wire [W+1:0] d1 = i_arc ? {{(W+1){1'b0}}, 1'b1} : {(W+2){1'b1}};
+  wire [W+1:0] d2 = i_arc ? two : {{(W+1){1'b1}}, 1'b0};
+  assign o_ti1 = ti + d1;
+  assign o_ti2 = ti + d2;
   assign o_tim1 = ti - 1'b1;
   assign o_to2 = to - two;
 

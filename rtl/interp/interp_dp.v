@@ -91,8 +91,8 @@ module interp_dp #(
   reg           to_z_q, to_one_q;
 
   // ------------------------------------------------------------ decisions
-  wire kz = (k_q == 3'd0);
-  wire k1 = (k_q == 3'd1);
+  reg kz_q, k1z_q;                        // k == 0; k == 1 with to == 0 (arc)
+  wire kz = kz_q;
   wire d_pos = ~d_q[W+1];                 // D >= 0
   wire done = kz & in_ex_q & out_ex_q;
   wire busy = ~done;
@@ -105,10 +105,12 @@ module interp_dp #(
   // in the end quadrant ci never falls below ti >= 1).
   wire xing = arc_q & ~kz & ci_one_q;
 
-  // Would this step end the move?
-  wire last_in = (k1 & arc_q & ci_one_q & co_ti_q & to_z_q) | (kz & in_one_q & out_ex_q);
-  wire last_out = kz & in_ex_q & out_one_q;
-  wire last = inw ? last_in : last_out;
+  // Would this step end the move? In the end quadrant only when one axis
+  // has arrived and the other has one step left, and then the end-point
+  // rule fixes the axis, so D plays no part; with one crossing left, when
+  // an inward step (D >= 0) crosses onto the end point itself.
+  wire one_left = (in_one_q & out_ex_q) | (in_ex_q & out_one_q);
+  wire last = (kz & one_left) | (d_pos & k1z_q & ci_one_q & co_ti_q);
 
   wire ld = i_valid & (done | (st & last));
   assign o_ready = ld;
@@ -180,12 +182,18 @@ module interp_dp #(
     if (i_rst) begin
       q_q <= 2'd0;
       k_q <= 3'd0;
+      kz_q <= 1'b1;
+      k1z_q <= 1'b0;
     end else if (ld) begin
       q_q <= i_q;
       k_q <= i_k;
+      kz_q <= (i_k == 3'd0);
+      k1z_q <= (i_k == 3'd1) & i_arc & i_flags[F_TO_Z];
     end else if (st & inw & xing) begin
       q_q <= cw_q ? q_q - 1'b1 : q_q + 1'b1;
       k_q <= k_q - 1'b1;
+      kz_q <= (k_q == 3'd1);
+      k1z_q <= (k_q == 3'd2) & to_z_q;
     end
   end
 
@@ -318,6 +326,8 @@ module interp_dp #(
       assert(tim1_q == ti_f - 1'b1);
       assert(to_z_q == (to_f == 0) && to_one_q == (to_f == 1));
       assert(k_q <= 3'd4);
+      assert(kz_q == (k_q == 3'd0));
+      assert(k1z_q == (k_q == 3'd1 && arc_q && to_f == 0));
       if (!arc_q) begin
         // Line: D = A*y - B*x, within [-B, A] (D < A unless A = 0), and
         // the distance travelled never passes the end point.

@@ -14,7 +14,7 @@ module pos_counter #(
 
   always @(posedge i_clk) begin
     if (i_rst) o_pos <= {PW{1'b0}};
-    else if (i_pulse) o_pos <= i_neg ? o_pos - 1'b1 : o_pos + 1'b1;
+    else if (i_pulse) o_pos <= o_pos + {{(PW-1){i_neg}}, 1'b1};  // +1 or -1
   end
 
 endmodule

@@ -2,11 +2,16 @@
 //
 // Takes one pulse (i_take, i_neg) when o_ready, and emits it as a STEP
 // pulse with DIR set to i_neg, keeping (in clocks; 0 acts as 1):
-//   step high   >= LEN      STEP high time
+//   step high   >= LEN      STEP high time (exactly LEN)
 //   step low    >= SPACE    from a STEP falling edge to the next rising edge
 //   dir setup   >= SETUP    from a DIR change to the next STEP rising edge
 //   dir hold    >= HOLD     from a STEP falling edge to a DIR change
 // o_ready is low from the clock after i_take until the step has fallen.
+//
+// Each interval is a down-counter loaded when it starts (the high time at
+// the rising edge, space and hold at the falling edge, setup at the DIR
+// change) and counting to 0; an interval of n clocks has passed when the
+// counter, loaded with n in the first clock of the interval, is <= 1.
 `default_nettype none
 
 module step_chan #(
@@ -27,21 +32,18 @@ module step_chan #(
 
   reg pend_q;          // a pulse is waiting or being emitted
   reg want_q;          // its direction
-  reg [TW-1:0] high_q; // clocks of STEP high left
-  reg [TW-1:0] fall_q; // clocks since the STEP falling edge (saturating)
-  reg [TW-1:0] dirc_q; // clocks since the DIR change (saturating)
+  reg [TW-1:0] high_q; // STEP high clocks left, this one included
+  reg [TW-1:0] spc_q;  // STEP low clocks still required, this one included
+  reg [TW-1:0] hld_q;  // clocks before DIR may change, this one included
+  reg [TW-1:0] set_q;  // clocks before STEP may rise after DIR, this one included
 
-  wire [TW-1:0] one = {{(TW-1){1'b0}}, 1'b1};
-  wire [TW-1:0] len = (i_len == 0) ? one : i_len;
-  // The counters count the clock in which the event becomes visible as 1,
-  // so "fall_q >= SPACE" in a clock lets STEP rise in the next one after
-  // exactly SPACE low clocks.
-  wire space_ok = (fall_q >= i_space);
-  wire hold_ok = (fall_q >= i_hold);
-  wire setup_ok = (dirc_q >= i_setup);
+  wire high_last = (high_q[TW-1:1] == 0);
+  wire space_ok = (spc_q[TW-1:1] == 0);
+  wire hold_ok = (hld_q[TW-1:1] == 0);
+  wire setup_ok = (set_q[TW-1:1] == 0);
   wire change_dir = pend_q & ~o_step & (o_dir != want_q) & hold_ok;
   wire rise = pend_q & ~o_step & (o_dir == want_q) & space_ok & setup_ok;
-  wire fall = o_step & (high_q <= one);
+  wire fall = o_step & high_last;
 
   assign o_ready = ~pend_q;
 
@@ -58,39 +60,45 @@ module step_chan #(
     end
   end
 
-  // STEP and its high-time counter.
+  // STEP.
+  always @(posedge i_clk) begin
+    if (i_rst) o_step <= 1'b0;
+    else if (rise) o_step <= 1'b1;
+    else if (fall) o_step <= 1'b0;
+  end
+
+  // High time left.
+  always @(posedge i_clk) begin
+    if (i_rst) high_q <= {TW{1'b0}};
+    else if (rise) high_q <= i_len;
+    else if (o_step && high_q != 0) high_q <= high_q - 1'b1;
+  end
+
+  // Low time still required.
+  always @(posedge i_clk) begin
+    if (i_rst) spc_q <= {TW{1'b0}};
+    else if (fall) spc_q <= i_space;
+    else if (spc_q != 0) spc_q <= spc_q - 1'b1;
+  end
+
+  // Hold time still required.
+  always @(posedge i_clk) begin
+    if (i_rst) hld_q <= {TW{1'b0}};
+    else if (fall) hld_q <= i_hold;
+    else if (hld_q != 0) hld_q <= hld_q - 1'b1;
+  end
+
+  // DIR and the setup time still required.
   always @(posedge i_clk) begin
     if (i_rst) begin
-      o_step <= 1'b0;
-      high_q <= {TW{1'b0}};
-    end else if (rise) begin
-      o_step <= 1'b1;
-      high_q <= len;
-    end else if (fall) begin
-      o_step <= 1'b0;
-    end else if (o_step) begin
-      high_q <= high_q - 1'b1;
+      o_dir <= 1'b0;
+      set_q <= {TW{1'b0}};
+    end else if (change_dir) begin
+      o_dir <= want_q;
+      set_q <= i_setup;
+    end else if (set_q != 0) begin
+      set_q <= set_q - 1'b1;
     end
-  end
-
-  // DIR.
-  always @(posedge i_clk) begin
-    if (i_rst) o_dir <= 1'b0;
-    else if (change_dir) o_dir <= want_q;
-  end
-
-  // Clocks since the STEP falling edge, saturating.
-  always @(posedge i_clk) begin
-    if (i_rst) fall_q <= {TW{1'b1}};
-    else if (fall) fall_q <= one;
-    else if (~o_step && fall_q != {TW{1'b1}}) fall_q <= fall_q + 1'b1;
-  end
-
-  // Clocks since the DIR change, saturating.
-  always @(posedge i_clk) begin
-    if (i_rst) dirc_q <= {TW{1'b1}};
-    else if (change_dir) dirc_q <= one;
-    else if (dirc_q != {TW{1'b1}}) dirc_q <= dirc_q + 1'b1;
   end
 
 endmodule

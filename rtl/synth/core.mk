@@ -1,0 +1,25 @@
+# The interpolator core (rtl/interp) in the timing wrapper, on HX8K and UP5K.
+#   core_*: interp_top (datapath, block prep, queue, output stage, feed
+#           generator, Wishbone registers)
+#   dp_*:   the datapath interp_dp alone
+INTERP_DIR := $(RTL)/interp
+INTERP_V := $(addprefix $(INTERP_DIR)/,interp_top.v wb_regs.v cmd_gen.v step_out.v step_chan.v \
+	pos_counter.v interp_core.v interp_dp.v blk_prep.v move_fifo.v)
+
+DESIGNS += core_hx8k core_up5k dp_hx8k dp_up5k
+core_hx8k_SRCS := timing_wrap.v $(INTERP_V)
+core_hx8k_DEFS :=
+core_hx8k_INC := $(INTERP_DIR)
+core_hx8k_DEV := hx8k
+core_up5k_SRCS := $(core_hx8k_SRCS)
+core_up5k_DEFS :=
+core_up5k_INC := $(INTERP_DIR)
+core_up5k_DEV := up5k
+dp_hx8k_SRCS := timing_wrap.v $(INTERP_DIR)/interp_dp.v
+dp_hx8k_DEFS := -DDESIGN_DP
+dp_hx8k_INC := $(INTERP_DIR)
+dp_hx8k_DEV := hx8k
+dp_up5k_SRCS := $(dp_hx8k_SRCS)
+dp_up5k_DEFS := -DDESIGN_DP
+dp_up5k_INC := $(INTERP_DIR)
+dp_up5k_DEV := up5k

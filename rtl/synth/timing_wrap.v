@@ -1,0 +1,69 @@
+// timing_wrap: registered I/O around a design, so that nextpnr's Fmax is
+// register to register (in the spirit of PicoRV32's timing wrapper) and
+// the design fits any package: every input of the design comes from a
+// serial-in shift register, every output goes into a parallel-load
+// shift register read out on one pin. Nothing of the design is trimmed.
+//
+// The design is `interp_top` (the core with its queue, output stage, feed
+// generator and Wishbone registers) unless DESIGN_DP is defined, which
+// wraps the datapath interp_dp alone.
+`default_nettype none
+
+module timing_wrap (
+    input  wire i_clk,
+    input  wire i_ser,    // serial input
+    input  wire i_load,   // load the output shift register
+    output wire o_ser     // serial output
+);
+
+  localparam integer W = 24;
+`ifdef DESIGN_DP
+  localparam integer NI = 36 + 8 * W;  // fields up to bit 33 + 8W, reset on top
+  localparam integer NO = 16 + 3 * W;
+`else
+  localparam integer NI = 45;  // Wishbone in, the pin, reset on top
+  localparam integer NO = 41;
+`endif
+
+  reg [NI-1:0] in_q;
+  reg [NO-1:0] out_q;
+  wire [NO-1:0] outs;
+
+  always @(posedge i_clk) in_q <= {in_q[NI-2:0], i_ser};
+
+  always @(posedge i_clk) begin
+    if (i_load) out_q <= outs;
+    else out_q <= {1'b0, out_q[NO-1:1]};
+  end
+  assign o_ser = out_q[0];
+
+  // Reset from the input register too, so it is a register output.
+  wire rst = in_q[NI-1];
+
+`ifdef DESIGN_DP
+  interp_dp #(.W(W)) u_dut (
+      .i_clk(i_clk), .i_rst(rst), .i_cmd(in_q[0]), .i_valid(in_q[1]), .o_ready(outs[0]),
+      .i_arc(in_q[2]), .i_cw(in_q[3]), .i_sxn(in_q[4]), .i_syn(in_q[5]),
+      .i_q(in_q[7:6]), .i_k(in_q[10:8]),
+      .i_ci(in_q[16 +: W]), .i_co(in_q[16 + W +: W]),
+      .i_sub(in_q[16 + 2 * W +: W + 1]), .i_add(in_q[17 + 3 * W +: W + 1]),
+      .i_ti1(in_q[18 + 4 * W +: W + 2]), .i_ti2(in_q[20 + 5 * W +: W + 2]),
+      .i_tim1(in_q[22 + 6 * W +: W + 2]), .i_to2(in_q[24 + 7 * W +: W + 2]),
+      .i_flags(in_q[26 + 8 * W +: 8]),
+      .o_pulse(outs[1]), .o_pulse_y(outs[2]), .o_pulse_neg(outs[3]), .o_pulse_last(outs[4]),
+      .o_busy(outs[5]), .o_xmag(outs[6 +: W]), .o_xneg(outs[6 + W]), .o_ymag(outs[7 + W +: W]),
+      .o_yneg(outs[7 + 2 * W]), .o_d(outs[8 + 2 * W +: W + 2]), .o_q(outs[10 + 3 * W +: 2]),
+      .o_k(outs[12 + 3 * W +: 3]), .o_arc(outs[15 + 3 * W])
+  );
+`else
+  interp_top #(.W(W), .QAW(4)) u_dut (
+      .i_clk(i_clk), .i_rst(rst),
+      .i_wb_cyc(in_q[0]), .i_wb_stb(in_q[1]), .i_wb_we(in_q[2]), .i_wb_adr(in_q[10:3]),
+      .i_wb_dat(in_q[42:11]), .o_wb_dat(outs[31:0]), .o_wb_ack(outs[32]),
+      .i_cmd_pin(in_q[43]),
+      .o_step_x(outs[33]), .o_dir_x(outs[34]), .o_step_y(outs[35]), .o_dir_y(outs[36]),
+      .o_pulse(outs[37]), .o_pulse_y(outs[38]), .o_pulse_neg(outs[39]), .o_busy(outs[40])
+  );
+`endif
+
+endmodule
