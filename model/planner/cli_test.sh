@@ -81,6 +81,8 @@ expect_error "--engine: unknown engine 'nope'" "$work/line.ngc" --pulses --engin
 expect_error "--steps-per-mm: must be > 0" "$work/line.ngc" --pulses --steps-per-mm 0
 expect_error "does not combine" "$work/line.ngc" --pulses --csv "$work/x.csv"
 expect_error "unknown option '--bogus'" "$work/line.ngc" --bogus
+printf 'G1 X100000 F0.01\n' > "$work/long.ngc"
+expect_error "more than this tool simulates" "$work/long.ngc"
 
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]

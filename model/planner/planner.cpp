@@ -36,7 +36,7 @@ void require(bool ok, const std::string& what) {
 
 double chord_length(ChordMethod m, double R, double eps) {
   switch (m) {
-    case ChordMethod::Inside: return 2 * std::sqrt(std::max(0.0, 2 * R * eps - eps * eps));
+    case ChordMethod::Inside: return eps >= R ? 2 * R : 2 * std::sqrt(2 * R * eps - eps * eps);
     case ChordMethod::Outside: return 2 * std::sqrt(2 * R * eps + eps * eps);
     case ChordMethod::InsideOutside: return 4 * std::sqrt(R * eps);
   }
@@ -237,6 +237,8 @@ Plan plan(const std::vector<gcode::Block>& blocks, const Config& config) {
     t += s.duration;
   }
   p.total_time = t;
+  require(std::isfinite(t) && t / T < 1e12,
+          "the program takes " + std::to_string(t) + " s, more than 10^12 cycles of " + std::to_string(T) + " s");
   return p;
 }
 

@@ -238,6 +238,11 @@ int run(const std::vector<std::string>& argv) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(file + ": " + e.what());
   }
+  constexpr double kMaxCycles = 2e7;  // samples are kept in memory (~64 bytes each)
+  if (plan.total_time / c.cycle_s > kMaxCycles)
+    throw UsageError(file + ": the program runs " + std::to_string(plan.total_time) + " s = " +
+                     std::to_string(static_cast<long long>(plan.total_time / c.cycle_s)) +
+                     " cycles, more than this tool simulates (2e7)");
   const auto samples = planner::interpolate(plan);
 
   if (pulses) {
