@@ -1,6 +1,7 @@
 // The `contour` CLI as a user sees it: paper examples, formats, errors.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <fstream>
 #include <sstream>
 
@@ -92,7 +93,13 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"arc 1 0 0 1 --ccw", "radius too small"},
                       BadInput{"arc 16777215 1 0 1 --ccw", "radius too large"},
                       BadInput{"arc 6 0 0 6 --ccw --format svg", "--format svg needs -o FILE"},
-                      BadInput{"nosuchcommand", "unknown command 'nosuchcommand'"}));
+                      BadInput{"nosuchcommand", "unknown command 'nosuchcommand'"}),
+    [](const ::testing::TestParamInfo<BadInput>& info) {
+      // "line 16777216 0" -> "line_16777216_0"; the index keeps names unique.
+      std::string name;
+      for (const char* c = info.param.args; *c; ++c) name += std::isalnum(static_cast<unsigned char>(*c)) ? *c : '_';
+      return name + "_" + std::to_string(info.index);
+    });
 
 TEST(Cli, HelpListsCommandsAndEngines) {
   const Outcome top = contour("--help");
