@@ -141,6 +141,8 @@ CommandResult Host::command() {
     if (!acked && machine_->last().kind == i8085::StepKind::interrupt) {
       acked = true;
       t0 = before;
+    } else if (acked && machine_->last().kind == i8085::StepKind::instruction) {
+      ++r.instructions;
     }
     if (acked && machine_->regs().sp == sp_idle_) break;
   }
@@ -194,7 +196,7 @@ std::uint64_t pulse_bound(const Move& m) {
 
 }  // namespace
 
-RunResult Host::run(const Move& m, std::vector<int>* tstates) {
+RunResult Host::run(const Move& m, std::vector<CommandResult>* commands) {
   validate<24>(m);
   RunResult r;
   if (!m.is_arc() && m.xe == 0 && m.ye == 0) {
@@ -213,7 +215,7 @@ RunResult Host::run(const Move& m, std::vector<int>* tstates) {
                              " gave no output pulse");
     ++n;
     r.steps.push_back({*c.pulse, state(sm, n)});
-    if (tstates) tstates->push_back(c.tstates);
+    if (commands) commands->push_back(c);
     if (n > bound) throw std::logic_error("sw8085: " + describe(m) + " did not end after " + std::to_string(n) + " pulses");
   }
   r.final_state = r.steps.empty() ? r.initial_state : r.steps.back().state;

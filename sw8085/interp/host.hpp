@@ -57,6 +57,7 @@ class BoardBus final : public i8085::Bus {
 struct CommandResult {
   std::optional<Pulse> pulse;
   int tstates = 0;  // acknowledge to the end of the RET, both included
+  int instructions = 0;  // instructions executed (the acknowledge is not one)
   bool move_ended = false;
 };
 
@@ -81,8 +82,9 @@ class Host {
   // Whether queue() may write slot i (0 or 1) now.
   bool slot_free(int i) const;
 
-  // Runs a move to its end, one command pulse at a time (the Engine seam).
-  RunResult run(const Move& m, std::vector<int>* tstates = nullptr);
+  // Runs a move to its end, one command pulse at a time (the Engine seam);
+  // `commands` gets the T-states and instructions of each.
+  RunResult run(const Move& m, std::vector<CommandResult>* commands = nullptr);
 
   // Command pulses every `period` T-states (the first one `period` after
   // the call) until `moves` are all done, the host queueing each as soon as
