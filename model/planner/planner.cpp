@@ -265,7 +265,14 @@ Sample Interpolator::at(std::size_t n) {
   out.seg = static_cast<int>(seg_);
   out.s = s.s_at(tl);
   out.v = s.v_at(tl);
-  const double e = s.geom.kind == Segment::Kind::Arc ? vertex_offset(plan_->config.chord, s.rho, out.v * T) : 0;
+  // The offset suits the longer of the two chords that meet here, so that
+  // each chord's ends are at least its own balanced offset out (the chord
+  // error is then at most the offset, itself at most eps).
+  double e = 0;
+  if (s.geom.kind == Segment::Kind::Arc) {
+    const double l = std::max(out.s - s.s_at(tl - T), s.s_at(tl + T) - out.s);
+    e = vertex_offset(plan_->config.chord, s.rho, l);
+  }
   out.p = s.geom.point(out.s, e);
   return out;
 }

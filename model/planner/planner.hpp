@@ -33,7 +33,8 @@
 // stop the next block waits at rest for the next cycle, so that a sample
 // lands on the corner); sample points on arcs are
 // moved off the arc radially by the offset e that balances the chord error
-// for the chord length L = v T at that speed: (a) e = 0 (ends on the arc),
+// for a chord of path length L, L the longer of the two chords meeting at the
+// point (so that the offset is never short for either): (a) e = 0 (ends on the arc),
 // (b) (R + e)^2 - (L/2)^2 = R^2 (middle on the arc), (c) (R + e)^2 - (L/2)^2
 // = (R - e)^2, e = L^2 / (16 R) (error e at the ends and in the middle); at
 // the longest chord this is paper B's placement (R + eps / R - eps for (c)).

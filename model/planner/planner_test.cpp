@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
+#include <string>
 
 #include "planner/two_stage.hpp"
 
@@ -231,6 +233,56 @@ TEST(PaperB, PerAxisLimitsNeverExceeded) {
       EXPECT_TRUE(r.tol_ok) << "max chord error " << r.max_chord_error << " tol " << tol << "\n" << prog;
     }
   }
+}
+
+// Random chains of short lines with small and large turns, tangent arcs
+// (CW and CCW) and Z moves: tolerance and every axis limit hold.
+TEST(PaperB, RandomProgramsRespectEveryLimit) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> U(-1, 1);
+  int runs = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    std::string prog = "G1 F" + std::to_string(1000 + 9000 * (U(rng) + 1) / 2) + "\n";
+    double x = 0, y = 0, z = 0, ang = 0;
+    const int n = 5 + trial % 40;
+    const double seglen = trial % 3 == 0 ? 0.05 : (trial % 3 == 1 ? 0.5 : 5);
+    char b[200];
+    for (int i = 0; i < n; ++i) {
+      ang += U(rng) * (trial % 2 ? 0.05 : 0.6);
+      if (i % 7 == 3) {  // an arc tangent to the previous line
+        const double R = 1 + 10 * (U(rng) + 1), sweep = 0.3 + (U(rng) + 1);
+        const int sg = U(rng) > 0 ? 1 : -1;
+        const double cx = x - sg * R * std::sin(ang), cy = y + sg * R * std::cos(ang);
+        const double a1 = std::atan2(y - cy, x - cx) + sg * sweep;
+        const double ex = cx + R * std::cos(a1), ey = cy + R * std::sin(a1);
+        std::snprintf(b, sizeof b, "G%d X%.6f Y%.6f I%.6f J%.6f\n", sg > 0 ? 3 : 2, ex, ey, cx - x, cy - y);
+        prog += b;
+        x = ex, y = ey, ang += sg * sweep;
+        continue;
+      }
+      const double L = seglen * (0.2 + (U(rng) + 1));
+      x += L * std::cos(ang), y += L * std::sin(ang), z += 0.1 * U(rng) * L;
+      std::snprintf(b, sizeof b, "G1 X%.6f Y%.6f Z%.6f\n", x, y, z);
+      prog += b;
+    }
+    for (double tol : {2e-5, 1e-3, 0.01}) {
+      Config c;
+      c.tol_mm = tol;
+      c.machine.vmax = {120, 80, 50};
+      c.machine.amax = {980, 700, 500};
+      const Plan p = plan_text(prog.c_str(), c);
+      const auto s = interpolate(p);
+      const Vec3 a = peak_accel(s, c.cycle_s);
+      const Report r = analyse(p, s);
+      for (int i = 0; i < 3; ++i) {
+        ASSERT_LE(a[i], c.machine.amax[i] * (1 + 1e-9)) << "trial " << trial << " axis " << i << "\n" << prog;
+        ASSERT_TRUE(r.axes[i].v_ok) << "trial " << trial << " axis " << i << "\n" << prog;
+      }
+      ASSERT_TRUE(r.tol_ok) << "trial " << trial << " error " << r.max_chord_error << " tol " << tol << "\n" << prog;
+      ++runs;
+    }
+  }
+  EXPECT_EQ(runs, 180);
 }
 
 TEST(Junctions, CollinearLinesKeepTheFeed) {
