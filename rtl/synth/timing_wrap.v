@@ -4,9 +4,11 @@
 // serial-in shift register, every output goes into a parallel-load
 // shift register read out on one pin. Nothing of the design is trimmed.
 //
-// The design is `interp_top` (the core with its queue, output stage, feed
-// generator and Wishbone registers) unless DESIGN_DP is defined, which
-// wraps the datapath interp_dp alone.
+// The design is selected by a define:
+//   DESIGN_TOP   interp_top: core, output stage, feed generator, position
+//                counters, Wishbone registers (the whole peripheral)
+//   DESIGN_CORE  interp_core (block prep, queue, datapath) + step_out
+//   DESIGN_DP    the datapath interp_dp alone
 `default_nettype none
 
 module timing_wrap (
@@ -20,6 +22,9 @@ module timing_wrap (
 `ifdef DESIGN_DP
   localparam integer NI = 36 + 8 * W;  // fields up to bit 33 + 8W, reset on top
   localparam integer NO = 16 + 3 * W;
+`elsif DESIGN_CORE
+  localparam integer NI = 16 + 4 * W + 64 + 1;
+  localparam integer NO = 49;
 `else
   localparam integer NI = 45;  // Wishbone in, the pin, reset on top
   localparam integer NO = 41;
@@ -55,6 +60,32 @@ module timing_wrap (
       .o_yneg(outs[7 + 2 * W]), .o_d(outs[8 + 2 * W +: W + 2]), .o_q(outs[10 + 3 * W +: 2]),
       .o_k(outs[12 + 3 * W +: 3]), .o_arc(outs[15 + 3 * W])
   );
+`elsif DESIGN_CORE
+  wire cmd_core, busy, pulse, pulse_y, pulse_neg;
+  // Waiver: the state outputs are for test benches; timing is of the rest.
+  /* verilator lint_off PINCONNECTEMPTY */
+  interp_core #(.W(W), .QAW(4)) u_core (
+      .i_clk(i_clk), .i_rst(rst), .i_abort(in_q[0]), .i_cmd(cmd_core),
+      .i_push(in_q[1]), .i_arc(in_q[2]), .i_cw(in_q[3]), .i_sxn(in_q[4]), .i_syn(in_q[5]),
+      .i_q(in_q[7:6]), .i_k(in_q[10:8]),
+      .i_xs(in_q[16 +: W]), .i_ys(in_q[16 + W +: W]), .i_xe(in_q[16 + 2 * W +: W]),
+      .i_ye(in_q[16 + 3 * W +: W]),
+      .o_full(outs[4]), .o_level(outs[10:5]),
+      .o_pulse(pulse), .o_pulse_y(pulse_y), .o_pulse_neg(pulse_neg), .o_pulse_last(outs[11]),
+      .o_busy(busy), .o_xmag(), .o_xneg(), .o_ymag(), .o_yneg(), .o_d(), .o_q(), .o_k(), .o_arc()
+  );
+  /* verilator lint_on PINCONNECTEMPTY */
+  step_out #(.TW(16)) u_out (
+      .i_clk(i_clk), .i_rst(rst), .i_clear(in_q[11]),
+      .i_len(in_q[16 + 4 * W +: 16]), .i_space(in_q[32 + 4 * W +: 16]),
+      .i_setup(in_q[48 + 4 * W +: 16]), .i_hold(in_q[64 + 4 * W +: 16]),
+      .i_cmd(in_q[12]), .i_busy(busy), .o_cmd(cmd_core),
+      .i_pulse(pulse), .i_pulse_y(pulse_y), .i_pulse_neg(pulse_neg),
+      .o_step_x(outs[0]), .o_dir_x(outs[1]), .o_step_y(outs[2]), .o_dir_y(outs[3]),
+      .o_overrun(outs[12]), .o_ovr_count(outs[44:13])
+  );
+  assign outs[47:45] = {pulse, pulse_y, pulse_neg};
+  assign outs[48] = busy;
 `else
   interp_top #(.W(W), .QAW(4)) u_dut (
       .i_clk(i_clk), .i_rst(rst),

@@ -1,0 +1,439 @@
+// Regression of interp_top, the Wishbone peripheral: register reads and
+// writes, moves written over the bus, the step/dir pins checked by a
+// timing monitor (any step or dir edge that breaks the programmed timing
+// fails the test), the overrun flag and counter under a command rate the
+// output cannot follow, the feed generator, the command pin, abort.
+//
+// Offsets come from the generated gen/interp_regs.h (rtl/interp/regmap.def).
+// CONTOUR_FST=FILE: FST trace (use with --gtest_filter).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "Vinterp_top.h"
+#include "core_harness.hpp"
+#include "interp/engine.hpp"
+#include "interp_regs.h"
+#include "verilated_fst_c.h"
+
+namespace contour {
+namespace {
+
+struct Timing {
+  std::uint32_t len = 1, space = 1, setup = 1, hold = 1;
+};
+
+// Watches one axis' STEP and DIR every clock; records the steps (their
+// direction at the rising edge) and every timing violation.
+class AxisMonitor {
+ public:
+  AxisMonitor(Axis a, const Timing* t) : axis_(a), t_(t) {}
+
+  void sample(std::uint64_t c, bool step, bool dir, std::vector<std::string>& errors) {
+    auto eff = [](std::uint32_t v) { return v == 0 ? 1u : v; };
+    const char* name = axis_ == Axis::X ? "X" : "Y";
+    if (dir != dir_) {
+      if (step) errors.push_back(std::string(name) + ": DIR changed while STEP high at clock " + std::to_string(c));
+      if (have_fall_ && c - fall_ < eff(t_->hold))
+        errors.push_back(std::string(name) + ": DIR hold " + std::to_string(c - fall_) + " < " +
+                         std::to_string(eff(t_->hold)) + " at clock " + std::to_string(c));
+      dir_ = dir;
+      dir_change_ = c;
+      have_dir_change_ = true;
+    }
+    if (step && !step_) {
+      if (have_fall_ && c - fall_ < eff(t_->space))
+        errors.push_back(std::string(name) + ": STEP low " + std::to_string(c - fall_) + " < " +
+                         std::to_string(eff(t_->space)) + " at clock " + std::to_string(c));
+      if (have_dir_change_ && c - dir_change_ < eff(t_->setup))
+        errors.push_back(std::string(name) + ": DIR setup " + std::to_string(c - dir_change_) + " < " +
+                         std::to_string(eff(t_->setup)) + " at clock " + std::to_string(c));
+      rise_ = c;
+      steps.push_back(Pulse{axis_, static_cast<std::int8_t>(dir ? -1 : +1)});
+      step_cycles.push_back(c);
+    }
+    if (!step && step_) {
+      if (c - rise_ != eff(t_->len))
+        errors.push_back(std::string(name) + ": STEP high " + std::to_string(c - rise_) + " != " +
+                         std::to_string(eff(t_->len)) + " at clock " + std::to_string(c));
+      fall_ = c;
+      have_fall_ = true;
+    }
+    step_ = step;
+  }
+
+  std::vector<Pulse> steps;
+  std::vector<std::uint64_t> step_cycles;
+
+ private:
+  Axis axis_;
+  const Timing* t_;
+  bool step_ = false, dir_ = false;
+  std::uint64_t rise_ = 0, fall_ = 0, dir_change_ = 0;
+  bool have_fall_ = false, have_dir_change_ = false;
+};
+
+class TopHarness {
+ public:
+  TopHarness() : ctx_(std::make_unique<VerilatedContext>()), mx_(Axis::X, &timing), my_(Axis::Y, &timing) {
+    const char* fst = std::getenv("CONTOUR_FST");
+    if (fst) ctx_->traceEverOn(true);
+    top_ = std::make_unique<Vinterp_top>(ctx_.get());
+    if (fst) {
+      trace_ = std::make_unique<VerilatedFstC>();
+      top_->trace(trace_.get(), 99);
+      trace_->open(fst);
+    }
+    top_->i_rst = 1;
+    tick();
+    tick();
+    top_->i_rst = 0;
+    tick();
+  }
+  ~TopHarness() {
+    close_trace();
+    top_->final();
+  }
+
+  Vinterp_top& top() { return *top_; }
+  std::uint64_t cycle() const { return cycle_; }
+
+  void tick() {
+    top_->i_clk = 0;
+    top_->eval();
+    dump();
+    top_->i_clk = 1;
+    top_->eval();
+    dump();
+    ++cycle_;
+    mx_.sample(cycle_, top_->o_step_x, top_->o_dir_x, errors);
+    my_.sample(cycle_, top_->o_step_y, top_->o_dir_y, errors);
+    if (top_->o_pulse) ++core_pulses;
+    if (top_->o_busy) ++busy_cycles;
+  }
+
+  void close_trace() {
+    if (trace_) {
+      trace_->close();
+      trace_.reset();
+    }
+  }
+
+  // Wishbone B4 classic single accesses; fail after 8 clocks without ACK.
+  std::uint32_t access(std::uint32_t adr, bool we, std::uint32_t dat) {
+    top_->i_wb_cyc = 1;
+    top_->i_wb_stb = 1;
+    top_->i_wb_we = we;
+    top_->i_wb_adr = adr;
+    top_->i_wb_dat = dat;
+    for (int i = 0; i < 8; ++i) {
+      tick();
+      if (top_->o_wb_ack) {
+        const std::uint32_t v = top_->o_wb_dat;
+        top_->i_wb_cyc = 0;
+        top_->i_wb_stb = 0;
+        top_->i_wb_we = 0;
+        tick();
+        return v;
+      }
+    }
+    ADD_FAILURE() << "no Wishbone ACK for address " << adr;
+    return 0;
+  }
+  void write(std::uint32_t adr, std::uint32_t v) { access(adr, true, v); }
+  std::uint32_t read(std::uint32_t adr) { return access(adr, false, 0); }
+
+  void set_timing(const Timing& t) {
+    timing = t;
+    write(INTERP_REG_STEP_LEN, t.len);
+    write(INTERP_REG_STEP_SPACE, t.space);
+    write(INTERP_REG_DIR_SETUP, t.setup);
+    write(INTERP_REG_DIR_HOLD, t.hold);
+  }
+
+  // Stages and pushes a move as the host would (validation at W = 24).
+  void push(const Move& m) {
+    const rtl::Block b = rtl::make_block<24>(m);
+    const std::uint32_t mode = (b.arc << INTERP_BLK_MODE_ARC_LSB) | (b.cw << INTERP_BLK_MODE_CW_LSB) |
+                               (b.sxn << INTERP_BLK_MODE_SXN_LSB) | (b.syn << INTERP_BLK_MODE_SYN_LSB) |
+                               (std::uint32_t(b.q) << INTERP_BLK_MODE_Q_LSB) |
+                               (std::uint32_t(b.k) << INTERP_BLK_MODE_K_LSB);
+    write(INTERP_REG_BLK_MODE, mode);
+    write(INTERP_REG_BLK_XS, std::uint32_t(b.xs));
+    write(INTERP_REG_BLK_YS, std::uint32_t(b.ys));
+    write(INTERP_REG_BLK_XE, std::uint32_t(b.xe));
+    write(INTERP_REG_BLK_YE, std::uint32_t(b.ye));
+    write(INTERP_REG_PUSH, 1);
+  }
+
+  // Runs clocks until the queue is empty, the core idle and both STEP
+  // outputs low for a while (or `max` clocks).
+  void run_until_idle(std::uint64_t max) {
+    std::uint64_t quiet = 0;
+    for (std::uint64_t i = 0; i < max && quiet < 64; ++i) {
+      tick();
+      const bool idle = !top_->o_busy && !top_->o_step_x && !top_->o_step_y;
+      quiet = idle ? quiet + 1 : 0;
+    }
+  }
+
+  // The pin-level pulses of both axes in the order of their rising edges.
+  std::vector<Pulse> pin_pulses() const {
+    std::vector<std::pair<std::uint64_t, Pulse>> all;
+    for (std::size_t i = 0; i < mx_.steps.size(); ++i) all.push_back({mx_.step_cycles[i], mx_.steps[i]});
+    for (std::size_t i = 0; i < my_.steps.size(); ++i) all.push_back({my_.step_cycles[i], my_.steps[i]});
+    std::stable_sort(all.begin(), all.end(), [](auto& a, auto& b) { return a.first < b.first; });
+    std::vector<Pulse> v;
+    for (auto& p : all) v.push_back(p.second);
+    return v;
+  }
+
+  std::string error_text() const {
+    std::ostringstream o;
+    for (std::size_t i = 0; i < errors.size() && i < 5; ++i) o << errors[i] << "\n";
+    return o.str();
+  }
+
+  Timing timing;
+  std::vector<std::string> errors;
+  std::uint64_t core_pulses = 0, busy_cycles = 0;
+
+ private:
+  void dump() {
+    if (trace_) trace_->dump(static_cast<std::uint64_t>(ctx_->time()));
+    ctx_->timeInc(1);
+  }
+  std::unique_ptr<VerilatedContext> ctx_;
+  std::unique_ptr<Vinterp_top> top_;
+  std::unique_ptr<VerilatedFstC> trace_;
+  AxisMonitor mx_, my_;
+  std::uint64_t cycle_ = 0;
+};
+
+std::vector<Pulse> model_pulses(const std::vector<Move>& moves) {
+  std::vector<Pulse> v;
+  for (const Move& m : moves)
+    for (const auto& s : run_model<24>(m).steps) v.push_back(s.pulse);
+  return v;
+}
+
+// The end position of a list of moves (lines relative, arcs about their
+// centre: the position changes by end - start).
+std::pair<std::int64_t, std::int64_t> displacement(const std::vector<Move>& moves) {
+  std::int64_t x = 0, y = 0;
+  for (const Move& m : moves) {
+    x += m.xe - m.xs;
+    y += m.ye - m.ys;
+  }
+  return {x, y};
+}
+
+std::uint32_t status(TopHarness& h) { return h.read(INTERP_REG_STATUS); }
+
+// Runs `moves` through the bus with a command source and the given timing;
+// checks the pins carry exactly the model's pulses, the timing monitor is
+// clean and the position counters end at the end point.
+// Returns the busy clocks and core pulses counted from the command start.
+std::pair<std::uint64_t, std::uint64_t> run_and_check(TopHarness& h, const std::vector<Move>& moves,
+                                                      std::uint32_t src, std::uint32_t feed,
+                                                      std::uint64_t max_clocks) {
+  h.write(INTERP_REG_FEED, feed);
+  for (const Move& m : moves) h.push(m);
+  h.write(INTERP_REG_CTRL, src << INTERP_CTRL_SRC_LSB);
+  const std::uint64_t busy0 = h.busy_cycles, pulses0 = h.core_pulses;
+  h.run_until_idle(max_clocks);
+  const std::pair<std::uint64_t, std::uint64_t> counts{h.busy_cycles - busy0, h.core_pulses - pulses0};
+  h.write(INTERP_REG_CTRL, 0);
+  const auto want = model_pulses(moves);
+  const auto got = h.pin_pulses();
+  EXPECT_EQ(got.size(), want.size()) << "steps on the pins";
+  for (std::size_t i = 0; i < want.size() && i < got.size(); ++i) {
+    EXPECT_EQ(got[i], want[i]) << "step " << i + 1;
+    if (!(got[i] == want[i])) break;
+  }
+  EXPECT_TRUE(h.errors.empty()) << h.error_text();
+  const auto [dx, dy] = displacement(moves);
+  EXPECT_EQ(std::int32_t(h.read(INTERP_REG_POS_X)), dx);
+  EXPECT_EQ(std::int32_t(h.read(INTERP_REG_POS_Y)), dy);
+  EXPECT_EQ(h.read(INTERP_REG_MOVES), moves.size());
+  if (!h.errors.empty()) h.close_trace();
+  return counts;
+}
+
+TEST(InterpTop, RegistersReadAndWrite) {
+  TopHarness h;
+  // "INTP" in ASCII, independent of the generated constant.
+  EXPECT_EQ(h.read(INTERP_REG_ID), 0x494E5450u);
+  EXPECT_EQ(INTERP_ID_RESET, 0x494E5450u);
+  const std::uint32_t params = h.read(INTERP_REG_PARAMS);
+  EXPECT_EQ((params & INTERP_PARAMS_W_MASK) >> INTERP_PARAMS_W_LSB, 24u);
+  EXPECT_EQ((params & INTERP_PARAMS_QDEPTH_MASK) >> INTERP_PARAMS_QDEPTH_LSB, 18u);
+  // Reset values: queue empty, nothing running.
+  EXPECT_EQ(status(h), std::uint32_t(INTERP_STATUS_EMPTY_MASK));
+  EXPECT_EQ(h.read(INTERP_REG_STEP_LEN), 1u);
+  EXPECT_EQ(h.read(INTERP_REG_POS_X), 0u);
+  // Read back what was written, cut to each register's width.
+  const std::pair<std::uint32_t, std::uint32_t> rw[] = {
+      {INTERP_REG_FEED, 0xFFFFFFFFu},       {INTERP_REG_STEP_LEN, 0xFFFFu},
+      {INTERP_REG_STEP_SPACE, 0xFFFFu},     {INTERP_REG_DIR_SETUP, 0xFFFFu},
+      {INTERP_REG_DIR_HOLD, 0xFFFFu},       {INTERP_REG_BLK_MODE, 0x1FFu},
+      {INTERP_REG_BLK_XS, 0xFFFFFFu},       {INTERP_REG_BLK_YS, 0xFFFFFFu},
+      {INTERP_REG_BLK_XE, 0xFFFFFFu},       {INTERP_REG_BLK_YE, 0xFFFFFFu},
+      {INTERP_REG_CTRL, INTERP_CTRL_SRC_MASK}};
+  for (const auto& [adr, mask] : rw) {
+    for (std::uint32_t v : {0xFFFFFFFFu, 0x12345678u, 0u, 0xA5A5A5A5u}) {
+      // CTRL: only the SRC field (ABORT and CLEAR are strobes).
+      const std::uint32_t wv = adr == INTERP_REG_CTRL ? v & INTERP_CTRL_SRC_MASK : v;
+      h.write(adr, wv);
+      const std::uint32_t want = wv & mask;
+      EXPECT_EQ(h.read(adr), want) << "register 0x" << std::hex << adr;
+    }
+  }
+  // Read-only registers ignore writes.
+  h.write(INTERP_REG_ID, 0);
+  h.write(INTERP_REG_POS_X, 55);
+  EXPECT_EQ(h.read(INTERP_REG_ID), 0x494E5450u);
+  EXPECT_EQ(h.read(INTERP_REG_POS_X), 0u);
+  h.write(INTERP_REG_CTRL, 0);
+}
+
+TEST(InterpTop, QueueFullRefusesAPushAndFlagsIt) {
+  TopHarness h;
+  for (int i = 0; i < 18; ++i) h.push(Move::line(1, 1));
+  std::uint32_t s = status(h);
+  EXPECT_TRUE(s & INTERP_STATUS_FULL_MASK);
+  EXPECT_FALSE(s & INTERP_STATUS_REJECT_MASK);
+  h.push(Move::line(100, 0));  // refused
+  s = status(h);
+  EXPECT_TRUE(s & INTERP_STATUS_REJECT_MASK);
+  // The 18 accepted blocks run, the refused one does not.
+  h.set_timing({1, 1, 1, 1});
+  h.write(INTERP_REG_CTRL, 2 << INTERP_CTRL_SRC_LSB);
+  h.write(INTERP_REG_FEED, 0x40000000u);  // every 4th clock
+  h.run_until_idle(100000);
+  EXPECT_EQ(h.read(INTERP_REG_POS_X), 18u);
+  EXPECT_EQ(h.read(INTERP_REG_POS_Y), 18u);
+  EXPECT_EQ(h.read(INTERP_REG_MOVES), 18u);
+  EXPECT_TRUE(status(h) & INTERP_STATUS_REJECT_MASK) << "sticky";
+  h.write(INTERP_REG_CTRL, INTERP_CTRL_CLEAR_MASK);
+  EXPECT_FALSE(status(h) & INTERP_STATUS_REJECT_MASK);
+  EXPECT_TRUE(status(h) & INTERP_STATUS_EMPTY_MASK);
+  EXPECT_TRUE(h.errors.empty()) << h.error_text();
+}
+
+// Feed generator at a rate the output follows: every pulse on the pins, in
+// order, with the programmed timing, and no overrun.
+TEST(InterpTop, FeedGeneratorMovesWithinTiming) {
+  TopHarness h;
+  h.set_timing({3, 2, 2, 3});
+  // One command per 16 clocks; a step needs at most 3 + 2 + 3 + 2 = 10.
+  run_and_check(h,
+                {Move::line(40, -25), Move::arc(30, 0, 0, 30, Sense::CCW), Move::arc(0, 30, 30, 0, Sense::CW),
+                 Move::line(-40, 25), Move::arc(5, 5, 5, 5, Sense::CW)},
+                2, 0x10000000u, 200000);
+  const std::uint32_t s = status(h);
+  EXPECT_FALSE(s & INTERP_STATUS_OVERRUN_MASK);
+  EXPECT_EQ(h.read(INTERP_REG_OVR_COUNT), 0u);
+}
+
+// Every clock a command pulse, far faster than the output timing allows:
+// the overrun flag and counter say so, and still no pulse is lost and no
+// timing is broken.
+TEST(InterpTop, OverrunFlagAndCounterUnderTooFastCommands) {
+  TopHarness h;
+  h.set_timing({4, 3, 2, 2});
+  const std::vector<Move> moves{Move::line(17, 9), Move::arc(8, 0, -8, 0, Sense::CW)};
+  const auto [busy, pulses] = run_and_check(h, moves, 3, 0, 100000);
+  const std::uint32_t s = status(h);
+  EXPECT_TRUE(s & INTERP_STATUS_OVERRUN_MASK);
+  // Every busy clock brought a command; the ones that made no pulse were
+  // refused and counted (give or take the clocks around the start).
+  const std::uint64_t refused = busy - pulses;
+  const std::uint32_t ovr = h.read(INTERP_REG_OVR_COUNT);
+  EXPECT_GT(ovr, 0u);
+  EXPECT_LE(ovr, refused + 2);
+  EXPECT_GE(ovr + 2, refused);
+  h.write(INTERP_REG_CTRL, INTERP_CTRL_CLEAR_MASK);
+  EXPECT_FALSE(status(h) & INTERP_STATUS_OVERRUN_MASK);
+  EXPECT_EQ(h.read(INTERP_REG_OVR_COUNT), 0u);
+}
+
+// Long DIR setup and hold against short steps, commands every clock, many
+// direction reversals (small full circles): DIR timing is what binds.
+TEST(InterpTop, DirSetupAndHoldBindUnderFastCommands) {
+  for (const Timing t : {Timing{2, 1, 7, 9}, Timing{1, 1, 12, 1}, Timing{1, 1, 1, 12}, Timing{5, 9, 0, 0}}) {
+    TopHarness h;
+    h.set_timing(t);
+    run_and_check(h, {Move::arc(3, 0, 3, 0, Sense::CCW), Move::arc(2, 1, 2, 1, Sense::CW), Move::line(-3, 2)}, 3, 0,
+                  100000);
+    EXPECT_TRUE(status(h) & INTERP_STATUS_OVERRUN_MASK);
+  }
+}
+
+// Changing the feed while running changes the command rate at once.
+TEST(InterpTop, FeedIsWritableWhileRunning) {
+  TopHarness h;
+  h.set_timing({1, 1, 1, 1});
+  h.push(Move::line(100000, 0));
+  h.write(INTERP_REG_FEED, 0x08000000u);  // 1/32 of the clock
+  h.write(INTERP_REG_CTRL, 2 << INTERP_CTRL_SRC_LSB);
+  std::uint64_t p0 = h.core_pulses;
+  for (int i = 0; i < 3200; ++i) h.tick();
+  const std::uint64_t slow = h.core_pulses - p0;
+  h.write(INTERP_REG_FEED, 0x20000000u);  // 1/8
+  p0 = h.core_pulses;
+  for (int i = 0; i < 3200; ++i) h.tick();
+  const std::uint64_t fast = h.core_pulses - p0;
+  EXPECT_NEAR(double(slow), 100.0, 2.0);
+  EXPECT_NEAR(double(fast), 400.0, 2.0);
+  EXPECT_FALSE(status(h) & INTERP_STATUS_OVERRUN_MASK);
+  h.write(INTERP_REG_CTRL, INTERP_CTRL_ABORT_MASK);
+  EXPECT_EQ(status(h) & (INTERP_STATUS_BUSY_MASK | INTERP_STATUS_EMPTY_MASK), INTERP_STATUS_EMPTY_MASK);
+  EXPECT_TRUE(h.errors.empty()) << h.error_text();
+}
+
+// The command pin: one pulse per rising edge, however long it stays high.
+TEST(InterpTop, CommandPinOnePulsePerRisingEdge) {
+  TopHarness h;
+  h.set_timing({2, 2, 1, 1});
+  h.push(Move::line(7, -3));
+  h.write(INTERP_REG_CTRL, 1 << INTERP_CTRL_SRC_LSB);
+  for (int e = 0; e < 6; ++e) {
+    h.top().i_cmd_pin = 1;
+    for (int i = 0; i < 5 + 3 * e; ++i) h.tick();
+    h.top().i_cmd_pin = 0;
+    for (int i = 0; i < 12; ++i) h.tick();
+  }
+  EXPECT_EQ(h.core_pulses, 6u);
+  EXPECT_EQ(h.pin_pulses().size(), 6u);
+  const auto want = model_pulses({Move::line(7, -3)});
+  for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(h.pin_pulses()[i], want[i]);
+  EXPECT_TRUE(h.errors.empty()) << h.error_text();
+}
+
+// Reset in the middle of a move through the bus: abort, then a new move
+// runs exactly as the model says.
+TEST(InterpTop, AbortInTheMiddleThenANewMove) {
+  TopHarness h;
+  h.set_timing({1, 1, 1, 1});
+  h.push(Move::arc(500, 0, 500, 0, Sense::CCW));
+  h.push(Move::line(9, 9));
+  h.write(INTERP_REG_FEED, 0x40000000u);
+  h.write(INTERP_REG_CTRL, 2 << INTERP_CTRL_SRC_LSB);
+  for (int i = 0; i < 2000; ++i) h.tick();
+  EXPECT_TRUE(status(h) & INTERP_STATUS_BUSY_MASK);
+  h.write(INTERP_REG_CTRL, (2 << INTERP_CTRL_SRC_LSB) | INTERP_CTRL_ABORT_MASK);
+  const std::uint64_t p0 = h.core_pulses;
+  for (int i = 0; i < 200; ++i) h.tick();
+  EXPECT_EQ(h.core_pulses, p0);
+  EXPECT_EQ(status(h) & (INTERP_STATUS_BUSY_MASK | INTERP_STATUS_EMPTY_MASK), INTERP_STATUS_EMPTY_MASK);
+  h.write(INTERP_REG_CTRL, 0);
+  EXPECT_TRUE(h.errors.empty()) << h.error_text();
+}
+
+}  // namespace
+}  // namespace contour
