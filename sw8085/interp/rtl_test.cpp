@@ -1,0 +1,69 @@
+// The same program on the Verilated 8085 (rtl/cpu8085) with the C++ board:
+// the engine "8085". Built only when Verilator is there.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "interp/engine.hpp"
+#include "sw8085/interp/host.hpp"
+
+#ifdef SW8085_HAVE_RTL
+#include "rtl_machine.hpp"
+
+namespace contour::sw8085 {
+namespace {
+
+std::unique_ptr<i8085::Machine> rtl(i8085::Bus& bus, i8085::Mode mode) {
+  return cpu8085::make_rtl_machine(bus, mode);
+}
+
+void expect_same(Host& h, const Move& m) {
+  const RunResult got = h.run(m), want = run_model<24>(m);
+  ASSERT_EQ(got.initial_state, want.initial_state) << describe(m);
+  ASSERT_EQ(got.steps.size(), want.steps.size()) << describe(m);
+  for (std::size_t i = 0; i < want.steps.size(); ++i) {
+    ASSERT_EQ(got.steps[i].pulse, want.steps[i].pulse) << describe(m) << " pulse " << i + 1;
+    ASSERT_EQ(got.steps[i].state, want.steps[i].state) << describe(m) << " after pulse " << i + 1;
+  }
+}
+
+TEST(Rtl, PaperExamplesAndSmallMoves) {
+  Host h(Program::builtin(), rtl);
+  expect_same(h, Move::line(6, 5));
+  expect_same(h, Move::arc(6, 0, 0, 6, Sense::CCW));
+  const int n = std::getenv("SW8085_FULL") ? 8 : 3;
+  for (int xe = -n; xe <= n; ++xe)
+    for (int ye = -n; ye <= n; ++ye) {
+      expect_same(h, Move::line(xe, ye));
+      if (HasFatalFailure()) return;
+    }
+  for (Sense s : {Sense::CCW, Sense::CW})
+    for (const Move& m : {Move::arc(5, 0, 5, 0, s), Move::arc(-3, 4, 4, -3, s), Move::arc(7, 1, -1, -7, s),
+                          Move::arc(2, -9, 9, 2, s)}) {
+      try {
+        validate<24>(m);
+      } catch (const InputError&) {
+        continue;
+      }
+      expect_same(h, m);
+      if (HasFatalFailure()) return;
+    }
+}
+
+TEST(Rtl, ByteBoundariesOfTheCounters) {
+  Host h(Program::builtin(), rtl);
+  expect_same(h, Move::line(257, -2));
+  expect_same(h, Move::line(-1, 512));
+}
+
+TEST(Rtl, OverrunsAreCountedOnTheVerilogCpu) {
+  Host h(Program::builtin(), rtl);
+  const auto t = h.drive({Move::line(40, -17), Move::arc(9, 2, -2, 9, Sense::CCW)}, 100.0);
+  ASSERT_TRUE(t.all_done);
+  EXPECT_GT(t.overruns, 0u);
+  EXPECT_EQ(t.commands, t.pulses + t.overruns + t.idle_commands);
+}
+
+}  // namespace
+}  // namespace contour::sw8085
+#endif
