@@ -19,21 +19,18 @@ std::uint32_t get24(std::span<const std::uint8_t, 256> mb, std::uint8_t addr) {
   return v;
 }
 
-// A distance counter in the program's pre-borrowed form: the low byte of v,
-// and (v - 1) >> 8 as 16 bits, so that the low byte reaching 0 is the moment
-// to take one from the high part; v = 0 is (0xFFFF, 0).
-struct Counter {
-  std::uint8_t low;
-  std::uint16_t high;
-};
-
-Counter to_counter(std::int64_t v) {
-  return {static_cast<std::uint8_t>(v & 0xFF), static_cast<std::uint16_t>(((v - 1) >> 8) & 0xFFFF)};
+// A distance counter: nested-loop bytes (see mailbox.hpp).
+std::array<std::uint8_t, 3> to_counter(std::int64_t v) {
+  if (v == 0) return {0, 0, 0};
+  const std::int64_t w = v - 1;
+  return {static_cast<std::uint8_t>((w & 0xFF) + 1), static_cast<std::uint8_t>(((w >> 8) & 0xFF) + 1),
+          static_cast<std::uint8_t>((w >> 16) + 1)};
 }
 
-std::int64_t from_counter(Counter c) {
-  if (c.high == 0xFFFF && c.low == 0) return 0;
-  return std::int64_t{c.high} * 256 + (c.low == 0 ? 256 : c.low);
+std::int64_t from_counter(const std::array<std::uint8_t, 3>& c) {
+  if (c[0] == 0 && c[1] == 0 && c[2] == 0) return 0;
+  auto d = [](std::uint8_t b) { return std::int64_t{b == 0 ? 256 : b}; };
+  return d(c[0]) + 256 * (d(c[1]) - 1) + 65536 * (d(c[2]) - 1);
 }
 
 std::uint8_t need(const std::map<std::string, std::uint16_t>& s, const char* name) {
@@ -92,13 +89,11 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
     sm.sy = m.ye < 0 ? -1 : +1;
     mb[at(base, kMode)] = a == 0 ? codes.lyo : line::kModeNonNeg;
     put24(mb, at(base, line::kD), 0);
-    const Counter rx = to_counter(a), ry = to_counter(b);
-    mb[at(base, line::kRxl)] = rx.low;
-    mb[at(base, line::kRxh)] = static_cast<std::uint8_t>(rx.high);
-    mb[at(base, line::kRxh + 1)] = static_cast<std::uint8_t>(rx.high >> 8);
-    mb[at(base, line::kRyl)] = ry.low;
-    mb[at(base, line::kRyh + 1)] = static_cast<std::uint8_t>(ry.high);
-    mb[at(base, line::kRyh)] = static_cast<std::uint8_t>(ry.high >> 8);
+    const auto rx = to_counter(a), ry = to_counter(b);
+    for (int i = 0; i < 3; ++i) {
+      mb[at(base, line::kRx[i])] = rx[i];
+      mb[at(base, line::kRy[i])] = ry[i];
+    }
     mb[at(base, line::kPatX)] = pattern(Axis::X, sm.sx);
     mb[at(base, line::kPatY)] = pattern(Axis::Y, sm.sy);
     mb[at(base, line::kAxes)] = static_cast<std::uint8_t>((a > 0) + (b > 0));
@@ -161,12 +156,12 @@ State decode(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Co
     else throw bad("no line state has this MODE");
     const std::int64_t d24 = get24(mb, at(base, line::kD));
     s.d = neg ? d24 - (std::int64_t{1} << 24) : d24;
-    const std::int64_t rx = from_counter({mb[at(base, line::kRxl)],
-                                          static_cast<std::uint16_t>(mb[at(base, line::kRxh)] |
-                                                                     mb[at(base, line::kRxh + 1)] << 8)});
-    const std::int64_t ry = from_counter({mb[at(base, line::kRyl)],
-                                          static_cast<std::uint16_t>(mb[at(base, line::kRyh + 1)] |
-                                                                     mb[at(base, line::kRyh)] << 8)});
+    std::array<std::uint8_t, 3> cx{}, cy{};
+    for (int i = 0; i < 3; ++i) {
+      cx[i] = mb[at(base, line::kRx[i])];
+      cy[i] = mb[at(base, line::kRy[i])];
+    }
+    const std::int64_t rx = from_counter(cx), ry = from_counter(cy);
     if (rx > sm.a || ry > sm.b) throw bad("distance left exceeds the move");
     s.x = sm.sx * (sm.a - rx);
     s.y = sm.sy * (sm.b - ry);

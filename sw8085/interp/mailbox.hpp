@@ -50,14 +50,15 @@ inline constexpr std::uint8_t kQueued = 0x01, kStarted = 0x02;
 
 // Line slot: offsets from the base.
 namespace line {
-inline constexpr int kRyh = -4;  // 2 bytes at -4 (high), -3 (low): y left, high 16 bits, pre-borrowed
+// Distance counters: three bytes c0 c1 c2 counting down like nested loops
+// (a stored 0 counts as 256): left = c0 + 256*(c1 - 1) + 65536*(c2 - 1),
+// 0 when all three bytes are 0.
+inline constexpr std::array<int, 3> kRx = {0x04, 0x06, 0x07};
+inline constexpr std::array<int, 3> kRy = {-1, -3, -4};
 inline constexpr int kPatY = -2;
-inline constexpr int kRyl = -1;
 inline constexpr int kD = 0x01;    // 3 bytes; sign in MODE (0xFF: D >= 0, 0x00: D < 0)
-inline constexpr int kRxl = 0x04;
 inline constexpr int kPatX = 0x05;
-inline constexpr int kRxh = 0x06;  // 2 bytes, little endian
-inline constexpr int kAxes = 0x08;
+inline constexpr int kAxes = 0x08;  // axes with distance left
 inline constexpr int kNotB = 0x10;  // 3 bytes: ~|YE|
 inline constexpr int kA = 0x14;     // 3 bytes: |XE|
 inline constexpr std::uint8_t kModeNonNeg = 0xFF, kModeNeg = 0x00;
