@@ -100,12 +100,13 @@ void Host::step_checked() {
 void Host::boot() {
   machine_->reset();
   auto mb = bus_.mailbox();
-  for (int n = 0; !(mb[kReady] == kReadyMagic && machine_->halted()); ++n) {
+  for (int n = 0; mb[kReady] != kReadyMagic; ++n) {
     if (n > 100000) throw std::runtime_error("sw8085: the program did not become ready");
     step_checked();
   }
   if (mb[kLayout] != kLayoutVersion) throw std::runtime_error("sw8085: mailbox layout version mismatch");
   sp_idle_ = machine_->regs().sp;
+  settle();
   bus_.outs.clear();
 }
 
@@ -205,6 +206,7 @@ RunResult Host::run(const Move& m, std::vector<CommandResult>* commands) {
     return r;
   }
   const SlotMove sm = queue(m);
+  settle();  // the main loop starts the move before the first command pulse
   r.initial_state = state(sm, 0);
   const std::uint64_t bound = pulse_bound(m);
   std::uint64_t n = 0;
@@ -284,9 +286,16 @@ Host::Timed Host::drive(const std::vector<Move>& moves, double period, std::vect
 }
 
 void Host::settle() {
-  for (int n = 0; !(machine_->halted() && machine_->regs().sp == sp_idle_); ++n) {
-    if (n > 1000000) throw std::runtime_error("sw8085: the program does not settle in its idle loop");
+  // The main loop has no HLT: settled means back in it, with no interrupt
+  // taken for a while (long enough for it to start a queued move).
+  std::uint64_t quiet_since = machine_->tstates();
+  for (int n = 0;; ++n) {
+    if (n > 1000000) throw std::runtime_error("sw8085: the program does not settle in its main loop");
     step_checked();
+    if (machine_->last().kind == i8085::StepKind::interrupt || machine_->regs().sp != sp_idle_)
+      quiet_since = machine_->tstates();
+    else if (machine_->tstates() - quiet_since >= 400)
+      return;
   }
 }
 
