@@ -12,7 +12,7 @@
 `default_nettype none
 
 module timing_wrap (
-    input  wire i_clk,
+    input  wire i_clk_pin,
     input  wire i_ser,    // serial input
     input  wire i_load,   // load the output shift register
     output wire o_ser     // serial output
@@ -28,6 +28,16 @@ module timing_wrap (
 `else
   localparam integer NI = 45;  // Wishbone in, the pin, reset on top
   localparam integer NO = 41;
+`endif
+
+  // The clock on a global buffer, explicitly: nextpnr runs with
+  // --no-promote-globals so that it does not move high-fanout enables onto
+  // the few global nets (their long entry delay would set Fmax).
+  wire i_clk;
+`ifdef SYNTHESIS
+  SB_GB u_clk_gb (.USER_SIGNAL_TO_GLOBAL_BUFFER(i_clk_pin), .GLOBAL_BUFFER_OUTPUT(i_clk));
+`else
+  assign i_clk = i_clk_pin;
 `endif
 
   reg [NI-1:0] in_q;

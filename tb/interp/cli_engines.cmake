@@ -1,0 +1,81 @@
+# cli_engines.cmake (cmake -P): `contour line|arc ... --engine rtl` must
+# print exactly what `--engine model` prints: --format steps and summary,
+# and the same error for a refused move. Moves: the paper's examples, fixed
+# cases and pseudo-random ones (seeded, so every run checks the same).
+#   -DCONTOUR=path/to/contour
+cmake_minimum_required(VERSION 3.25)
+if(NOT CONTOUR)
+  message(FATAL_ERROR "cli_engines: -DCONTOUR=path is required")
+endif()
+
+set(cases
+  "line 6 5" "line 0 0" "line -7 3" "line 100000 -3" "line -300000 1" "line 5 -200000"
+  "arc 6 0 0 6 --ccw" "arc 6 0 0 6 --cw" "arc 6 0 6 0 --ccw" "arc -5 5 5 -5 --cw"
+  "arc 1 1 -1 -1 --ccw" "arc 1000 0 0 -1000 --cw" "arc 3 4 3 4 --cw")
+string(RANDOM LENGTH 4 ALPHABET 0123456789 RANDOM_SEED 1982 seedtext)
+set(i 0)
+while(i LESS 24)
+  string(RANDOM LENGTH 4 ALPHABET 0123456789 a)
+  string(RANDOM LENGTH 4 ALPHABET 0123456789 b)
+  string(RANDOM LENGTH 1 ALPHABET 0123 sgn)
+  math(EXPR a "${a} % 3000")
+  math(EXPR b "${b} % 3000")
+  if(sgn STREQUAL "1" OR sgn STREQUAL "3")
+    math(EXPR a "-${a}")
+  endif()
+  if(sgn STREQUAL "2" OR sgn STREQUAL "3")
+    math(EXPR b "-${b}")
+  endif()
+  math(EXPR r "${i} % 4")
+  if(r EQUAL 0)
+    list(APPEND cases "line ${a} ${b}")
+  else()
+    # Arcs to a quarter or half turn of the start: exactly on the circle.
+    math(EXPR na "-${a}")
+    math(EXPR nb "-${b}")
+    if(r EQUAL 1)
+      list(APPEND cases "arc ${a} ${b} ${nb} ${a} --ccw")
+    elseif(r EQUAL 2)
+      list(APPEND cases "arc ${a} ${b} ${b} ${na} --cw")
+    else()
+      list(APPEND cases "arc ${a} ${b} ${na} ${nb} --cw")
+    endif()
+  endif()
+  math(EXPR i "${i} + 1")
+endwhile()
+# A refused move: the same message and status from both.
+list(APPEND cases "arc 6 0 0 7 --ccw" "line 16777216 0")
+
+set(failed 0)
+set(n 0)
+foreach(shown IN LISTS cases)
+  separate_arguments(c UNIX_COMMAND "${shown}")
+  foreach(fmt steps summary)
+    set(out_model "")
+    set(out_rtl "")
+    execute_process(COMMAND ${CONTOUR} ${c} --engine model --format ${fmt}
+      OUTPUT_VARIABLE out_model ERROR_VARIABLE err_model RESULT_VARIABLE rc_model)
+    execute_process(COMMAND ${CONTOUR} ${c} --engine rtl --format ${fmt}
+      OUTPUT_VARIABLE out_rtl ERROR_VARIABLE err_rtl RESULT_VARIABLE rc_rtl)
+    math(EXPR n "${n} + 1")
+    # The summary may name the engine; compare it with the name taken out.
+    string(REPLACE "rtl" "ENGINE" out_rtl_n "${out_rtl}")
+    string(REPLACE "model" "ENGINE" out_model_n "${out_model}")
+    string(REPLACE "rtl" "ENGINE" err_rtl_n "${err_rtl}")
+    string(REPLACE "model" "ENGINE" err_model_n "${err_model}")
+    if(NOT rc_model EQUAL rc_rtl OR NOT out_model_n STREQUAL out_rtl_n OR NOT err_model_n STREQUAL err_rtl_n)
+      math(EXPR failed "${failed} + 1")
+      string(SUBSTRING "${out_model}" 0 300 sm)
+      string(SUBSTRING "${out_rtl}" 0 300 sr)
+      message("MISMATCH contour ${shown} --format ${fmt}\n  model (${rc_model}): ${sm}${err_model}\n  rtl   (${rc_rtl}): ${sr}${err_rtl}")
+    elseif(fmt STREQUAL "steps" AND rc_model EQUAL 0 AND out_model STREQUAL "" AND NOT shown STREQUAL "line 0 0")
+      math(EXPR failed "${failed} + 1")
+      message("EMPTY contour ${shown}: no pulses from either engine")
+    endif()
+  endforeach()
+endforeach()
+math(EXPR passed "${n} - ${failed}")
+message("cli_engines: ${passed} PASSED, ${failed} FAILED (rtl vs model, ${n} runs)")
+if(failed GREATER 0)
+  message(FATAL_ERROR "cli_engines: the engines differ")
+endif()
