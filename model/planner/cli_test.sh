@@ -30,6 +30,13 @@ for w in "total time" "peak feed" "max chord err" "chord method b" "tolerance 0.
   echo "$sum" | grep -q "$w" && ok || bad "summary lacks '$w'"
 done
 
+# Machine limits from a config file: X at 3000 mm/min, 0.05 g.
+printf '# slow X\nvmax_x = 3000\namax_x = 1764000 # 0.05 g\nrapid=20000\n' > "$work/slow.cfg"
+out=$("$contour" gcode "$work/paperb.ngc" --config "$work/slow.cfg") || bad "config run exit $?"
+echo "$out" | grep -Eq '^X +[0-9.]+ +3000.0 +ok +[0-9]+ +1764000 +ok' && ok || bad "config limits not applied: $out"
+xv=$(echo "$out" | awk '$1 == "X" { print $2 }')
+awk -v v="$xv" 'BEGIN { exit !(v > 2900 && v <= 3000) }' && ok || bad "X peak velocity $xv with a 3000 limit"
+
 # CSV: header and one row per cycle plus the start.
 "$contour" gcode "$work/paperb.ngc" --csv "$work/p.csv" > /dev/null || bad "csv exit"
 head -1 "$work/p.csv" | grep -qx 't_s,x_mm,y_mm,z_mm,feed_mm_min,vx_mm_min,vy_mm_min,vz_mm_min' && ok || bad "csv header"

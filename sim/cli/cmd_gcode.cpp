@@ -91,6 +91,19 @@ void read_config(const std::string& path, planner::Machine& m) {
   }
 }
 
+std::string json_string(const std::string& s) {
+  std::string o = "\"";
+  for (unsigned char c : s) {
+    if (c == '"' || c == '\\') o += '\\', o += static_cast<char>(c);
+    else if (c < 0x20) {
+      char b[8];
+      std::snprintf(b, sizeof b, "\\u%04x", c);
+      o += b;
+    } else o += static_cast<char>(c);
+  }
+  return o + "\"";
+}
+
 const char* kind_name(const planner::Segment& g) {
   if (g.kind == planner::Segment::Kind::Line) return g.rapid ? "G0 line" : "G1 line";
   if (g.arc3d) return "3D arc";
@@ -276,7 +289,7 @@ int run(const std::vector<std::string>& argv) {
   if (format == "json") {
     std::ostringstream o;
     o.precision(10);
-    o << "{\"file\": \"" << file << "\", \"blocks\": " << plan.segs.size() << ", \"cycles\": " << r.cycles
+    o << "{\"file\": " << json_string(file) << ", \"blocks\": " << plan.segs.size() << ", \"cycles\": " << r.cycles
       << ", \"cycle_s\": " << c.cycle_s << ", \"total_time_s\": " << r.total_time_s
       << ", \"tolerance_mm\": " << c.tol_mm << ", \"chord_method\": \"" << planner::chord_name(c.chord)
       << "\", \"peak_feed_mm_min\": " << r.peak_feed * 60 << ", \"max_chord_error_mm\": " << r.max_chord_error
