@@ -205,6 +205,38 @@ TEST(PaperB, EveryChordWithinToleranceOfTheTrueArc) {
   }
 }
 
+TEST(PaperB, ThreeDArcsInEveryPlaneAndSense) {
+  // A circle of R 30 about (1, 2, 3) on a plane with normal (1, 2, 3)/|.|,
+  // from angle 0 to angle 2 rad. G3 (CCW about the normal, which points
+  // along +X, +Y and +Z alike) sweeps 2 rad; G2 sweeps 2 pi - 2.
+  const Vec3 c{1, 2, 3}, n = unit(Vec3{1, 2, 3});
+  const Vec3 e1 = unit(cross(n, Vec3{0, 0, 1})), e2 = cross(n, e1);
+  const double R = 30, phi = 2;
+  const Vec3 ps = c + R * e1, pe = c + R * std::cos(phi) * e1 + R * std::sin(phi) * e2;
+  for (const char* plane : {"G17", "G18", "G19"})
+    for (int g : {2, 3}) {
+      char prog[256];
+      std::snprintf(prog, sizeof prog, "%s G%d X%.9f Y%.9f Z%.9f I%.9f J%.9f K%.9f F3000\n", plane, g, pe.x, pe.y,
+                    pe.z, c.x - ps.x, c.y - ps.y, c.z - ps.z);
+      Config cfg;
+      cfg.tol_mm = 1e-3;
+      const Plan p = plan_text(prog, cfg, at(ps.x, ps.y, ps.z));
+      ASSERT_EQ(p.segs.size(), 1u);
+      const Segment& seg = p.segs[0].geom;
+      EXPECT_TRUE(seg.arc3d);
+      EXPECT_NEAR(seg.length, R * (g == 3 ? phi : 2 * kPi - phi), 1e-6) << prog;
+      const auto s = interpolate(p);
+      EXPECT_LE(max_chord_distance(s, c, n, R), 1e-3 + 1e-6) << prog;
+      // The sense: a quarter of the way along, the point is at angle
+      // +-(sweep / 4) from Ps about n.
+      const double q = (g == 3 ? 1 : -1) * seg.sweep / 4;
+      const Vec3 want = c + R * std::cos(q) * e1 + R * std::sin(q) * e2;
+      EXPECT_LT(norm(seg.point(seg.length / 4) - want), 1e-6) << prog;
+      const Report r = analyse(p, s);
+      EXPECT_TRUE(r.tol_ok && r.axes[0].a_ok && r.axes[1].a_ok && r.axes[2].a_ok) << prog;
+    }
+}
+
 TEST(PaperB, PerAxisLimitsNeverExceeded) {
   const char* programs[] = {
       kPaper3D,
