@@ -171,8 +171,7 @@ bool Host::slot_free(int i) const {
 }
 
 bool Host::done(const SlotMove& sm) const {
-  const std::uint8_t mode = bus_.mem[kMailbox + sm.base];
-  return mode == codes_.fin_p || mode == codes_.fin_n;
+  return codes_.is_done(bus_.mem[kMailbox + sm.base]);
 }
 
 std::uint32_t Host::overruns() const {

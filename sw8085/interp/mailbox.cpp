@@ -44,28 +44,36 @@ std::int64_t abs64(std::int64_t v) { return v < 0 ? -v : v; }
 }  // namespace
 
 Codes Codes::from_symbols(const std::map<std::string, std::uint16_t>& s) {
-  Codes c{};
+  Codes c;
   c.idle = need(s, "C_IDLE");
-  c.fin_p = need(s, "C_FINP");
-  c.fin_n = need(s, "C_FINN");
   c.lyo = need(s, "C_LYO");
-  c.aix = need(s, "C_AIX");
-  c.aoy = need(s, "C_AOY");
-  c.aiy = need(s, "C_AIY");
-  c.aox = need(s, "C_AOX");
-  c.eix = need(s, "C_EIX");
-  c.eoy = need(s, "C_EOY");
-  c.eiy = need(s, "C_EIY");
-  c.eox = need(s, "C_EOX");
-  c.fixp = need(s, "C_FIXP");
-  c.fixn = need(s, "C_FIXN");
-  c.foyp = need(s, "C_FOYP");
-  c.foyn = need(s, "C_FOYN");
-  c.fiyp = need(s, "C_FIYP");
-  c.fiyn = need(s, "C_FIYN");
-  c.foxp = need(s, "C_FOXP");
-  c.foxn = need(s, "C_FOXN");
+  struct Family {
+    const char* name;
+    bool neg, done;
+  };
+  static constexpr Family kFamilies[] = {
+      {"FINP", false, true}, {"FINN", true, true},  {"AIX", false, false}, {"AOY", true, false},
+      {"AIY", false, false}, {"AOX", true, false},  {"EIX", false, false}, {"EOY", true, false},
+      {"EIY", false, false}, {"EOX", true, false},  {"FIXP", false, false}, {"FIXN", true, false},
+      {"FOYP", false, false}, {"FOYN", true, false}, {"FIYP", false, false}, {"FIYN", true, false},
+      {"FOXP", false, false}, {"FOXN", true, false}};
+  for (const auto& f : kFamilies)
+    for (int p = 0; p < 2; ++p) {
+      const std::string sym = std::string("C_") + f.name + char('0' + p);
+      const std::uint8_t code = need(s, sym.c_str());
+      c.named[f.name][p] = code;
+      if (!c.arc.emplace(code, ArcCode{f.neg, p, f.done}).second)
+        throw std::runtime_error("interp.lst: code of " + sym + " is not unique");
+    }
+  c.fin_p = c.named["FINP"];
+  c.fin_n = c.named["FINN"];
   return c;
+}
+
+std::uint8_t Codes::code(const std::string& name, int p) const {
+  const auto it = named.find(name);
+  if (it == named.end()) throw std::logic_error("sw8085: no MODE code " + name);
+  return it->second[p];
 }
 
 std::optional<Pulse> decode_pattern(std::uint8_t v) {
@@ -87,7 +95,7 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
     sm.b = b;
     sm.sx = m.xe < 0 ? -1 : +1;
     sm.sy = m.ye < 0 ? -1 : +1;
-    mb[at(base, kMode)] = a == 0 ? codes.lyo : line::kModeNonNeg;
+    mb[at(base, kMode)] = a == 0 ? codes.lyo : line::kModeNonNeg;  // D = 0
     put24(mb, at(base, line::kD), 0);
     const auto rx = to_counter(a), ry = to_counter(b);
     for (int i = 0; i < 3; ++i) {
@@ -105,19 +113,18 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
   const int q = plan.q_start;
   const bool ix = inward_is_x(q, m.sense);
   const std::int64_t cx = abs64(m.xs), cy = abs64(m.ys), ex = abs64(m.xe), ey = abs64(m.ye);
-  std::uint8_t mode;
+  std::string mode;
   if (plan.crossings > 0) {
-    mode = ix ? codes.aix : codes.aiy;
+    mode = ix ? "AIX" : "AIY";
   } else {
     const bool in_done = ix ? cx == ex : cy == ey;
     const bool out_done = ix ? cy == ey : cx == ex;
     if (in_done && out_done) throw std::logic_error("sw8085::encode: an arc with k = 0 that starts at its end");
-    if (in_done) mode = ix ? codes.foyp : codes.foxp;
-    else if (out_done) mode = ix ? codes.fixp : codes.fiyp;
-    else mode = ix ? codes.eix : codes.eiy;
+    if (in_done) mode = ix ? "FOYP" : "FOXP";
+    else if (out_done) mode = ix ? "FIXP" : "FIYP";
+    else mode = ix ? "EIX" : "EIY";
   }
-  mb[at(base, kMode)] = mode;
-  mb[at(base, arc::kPar)] = 0;
+  mb[at(base, kMode)] = codes.code(mode, 0);  // D = 0: D >= 0, p = 0
   put24(mb, at(base, arc::kD), 0);
   put24(mb, at(base, arc::kCx), static_cast<std::uint32_t>(cx));
   put24(mb, at(base, arc::kEx), static_cast<std::uint32_t>(ex));
@@ -152,7 +159,7 @@ State decode(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Co
     bool neg;
     if (mode == line::kModeNonNeg || mode == codes.lyo) neg = false;
     else if (mode == line::kModeNeg) neg = true;
-    else if (mode == codes.fin_p) neg = false, s.done = true;
+    else if (mode == codes.fin_p[0]) neg = false, s.done = true;
     else throw bad("no line state has this MODE");
     const std::int64_t d24 = get24(mb, at(base, line::kD));
     s.d = neg ? d24 - (std::int64_t{1} << 24) : d24;
@@ -167,23 +174,12 @@ State decode(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Co
     s.y = sm.sy * (sm.b - ry);
     return s;
   }
-  bool neg;
-  const std::uint8_t pos_codes[] = {codes.aix, codes.aiy, codes.eix, codes.eiy, codes.fixp,
-                                    codes.foyp, codes.fiyp, codes.foxp, codes.fin_p};
-  const std::uint8_t neg_codes[] = {codes.aoy, codes.aox, codes.eoy, codes.eox, codes.fixn,
-                                    codes.foyn, codes.fiyn, codes.foxn, codes.fin_n};
-  auto in = [mode](const auto& list) {
-    for (auto c : list)
-      if (c == mode) return true;
-    return false;
-  };
-  if (in(pos_codes)) neg = false;
-  else if (in(neg_codes)) neg = true;
-  else throw bad("no arc state has this MODE");
-  s.done = mode == codes.fin_p || mode == codes.fin_n;
+  const auto it = codes.arc.find(mode);
+  if (it == codes.arc.end()) throw bad("no arc state has this MODE");
+  s.done = it->second.done;
   const std::int64_t d24 = get24(mb, at(base, arc::kD));
-  const std::int64_t dp = neg ? d24 - (std::int64_t{1} << 24) : d24;
-  s.d = 2 * dp + (mb[at(base, arc::kPar)] & 1);
+  const std::int64_t dp = it->second.neg ? d24 - (std::int64_t{1} << 24) : d24;
+  s.d = 2 * dp + it->second.parity;
   const int q = mb[at(base, arc::kQ)];
   if (q > 3) throw bad("quadrant " + std::to_string(q) + " out of range");
   s.quadrant = static_cast<std::uint8_t>(q);

@@ -40,7 +40,7 @@ inline constexpr std::uint8_t kReady = 0x06;      // kReadyMagic once initialise
 inline constexpr std::uint8_t kIdleCount = 0x08;  // 2 bytes: command pulses served with no move
 inline constexpr std::uint8_t kLayout = 0x0A;     // kLayoutVersion
 inline constexpr std::uint8_t kReadyMagic = 0x5A;
-inline constexpr std::uint8_t kLayoutVersion = 1;
+inline constexpr std::uint8_t kLayoutVersion = 2;
 
 // Slots: a slot spans base-4 .. base+0x3B.
 inline constexpr std::array<std::uint8_t, 2> kSlots = {0x80, 0xC0};
@@ -67,19 +67,29 @@ inline constexpr std::uint8_t kModeNonNeg = 0xFF, kModeNeg = 0x00;
 // Arc slot.
 namespace arc {
 inline constexpr int kPout = -2, kPin = -1;
-inline constexpr int kPar = 0x01;  // bit 0 = p: D = 2*D' + p
-inline constexpr int kD = 0x02;    // D', 3 bytes; sign from MODE
+inline constexpr int kD = 0x01;    // D', 3 bytes; its sign and p (D = 2*D' + p) from MODE
 inline constexpr int kCx = 0x05, kEx = 0x08, kCy = 0x0B, kEy = 0x0E;  // 3 bytes each
 inline constexpr int kQ = 0x11, kK = 0x12, kQstep = 0x13;
 inline constexpr int kPatterns = 0x14;  // PIN, POUT of quadrants 0..3
 }  // namespace arc
 
 // The MODE codes: assigned by the assembler (C_xxx in interp.a80), read from
-// its listing.
+// its listing. Arc codes come in two blocks, for p = 0 and p = 1 (D = 2*D' + p).
 struct Codes {
-  std::uint8_t idle, fin_p, fin_n, lyo;
-  std::uint8_t aix, aoy, aiy, aox, eix, eoy, eiy, eox;
-  std::uint8_t fixp, fixn, foyp, foyn, fiyp, fiyn, foxp, foxn;
+  struct ArcCode {
+    bool neg = false;  // D < 0
+    int parity = 0;    // p
+    bool done = false;
+  };
+  std::uint8_t idle = 0, lyo = 0;
+  std::array<std::uint8_t, 2> fin_p{}, fin_n{};
+  std::map<std::string, std::array<std::uint8_t, 2>> named;  // "AIX" -> {C_AIX0, C_AIX1}, ...
+  std::map<std::uint8_t, ArcCode> arc;                        // every arc code (FIN included)
+  // The code of an arc mode ("AIX", "FOYP", ...) for parity p.
+  std::uint8_t code(const std::string& name, int p) const;
+  bool is_done(std::uint8_t mode) const {
+    return mode == fin_p[0] || mode == fin_p[1] || mode == fin_n[0] || mode == fin_n[1];
+  }
   // From the listing's symbol table; throws std::runtime_error naming a
   // missing symbol.
   static Codes from_symbols(const std::map<std::string, std::uint16_t>& symbols);
