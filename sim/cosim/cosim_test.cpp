@@ -1,5 +1,352 @@
+// Tests of the co-simulation: the scoreboard's rules on hand-made streams,
+// then whole SystemC runs (a reduced sweep, injected faults, the gated core
+// clock against a free-running one). Each SystemC run happens in a forked
+// child, because SystemC elaborates once per process; the child sends its
+// rows back through a pipe.
+//
+// Expected pulses come from paper A, not from the model: Fig. 2 (line to
+// (6, 5)) is +X +Y +X +Y +X +Y +X +Y +X +Y +X, Fig. 5 (arc (6, 0) to (0, 6)
+// CCW) is -X +Y +Y +Y +Y -X +Y -X +Y -X -X -X.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cases.hpp"
+#include "options.hpp"
+#include "report.hpp"
+#include "scoreboard.hpp"
+#include "top.hpp"
+
+// SystemC's main() calls sc_main; the tests are the program.
+static const int kNoBanner = ::setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);
+
 int sc_main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   return RUN_ALL_TESTS();
 }
+
+namespace contour::cosim {
+namespace {
+
+const char* kFig2 = "+X +Y +X +Y +X +Y +X +Y +X +Y +X";
+const char* kFig5 = "-X +Y +Y +Y +Y -X +Y -X +Y -X -X -X";
+
+std::vector<Pulse> pulses(const std::string& text) {
+  std::vector<Pulse> out;
+  std::istringstream in(text);
+  std::string t;
+  while (in >> t) out.push_back(Pulse{t[1] == 'X' ? Axis::X : Axis::Y, static_cast<std::int8_t>(t[0] == '-' ? -1 : 1)});
+  return out;
+}
+
+Case fig2() { return suite("paper").cases.at(0); }
+Case fig5() { return suite("paper").cases.at(1); }
+
+// An engine run that put out `ps`, one every 10 us, with `overruns` flagged.
+EngineRun run_of(const std::string& engine, const std::vector<Pulse>& ps, std::int64_t overruns) {
+  EngineRun r;
+  r.engine = engine;
+  for (std::size_t i = 0; i < ps.size(); ++i) r.out.push_back({10.0 * double(i + 1) + 1, ps[i], ""});
+  r.overruns_known = true;
+  r.overruns = overruns;
+  return r;
+}
+
+std::vector<double> commands(std::size_t n) {
+  std::vector<double> t;
+  for (std::size_t i = 0; i < n; ++i) t.push_back(10.0 * double(i + 1));
+  return t;
+}
+
+TEST(Scoreboard, TheSuitesPaperCasesAreThePapersFigures) {
+  EXPECT_EQ(expect(fig2()).pulses, pulses(kFig2));
+  EXPECT_EQ(expect(fig5()).pulses, pulses(kFig5));
+}
+
+TEST(Scoreboard, IdenticalStreamPasses) {
+  const auto exp = expect(fig2());
+  const Row r = judge(fig2(), exp, 4e3, commands(11), run_of("iss", pulses(kFig2), 0));
+  EXPECT_EQ(r.verdict, "PASS") << r.note;
+  EXPECT_EQ(r.lost, 0u);
+  EXPECT_TRUE(r.latency_exact);
+  EXPECT_NEAR(r.lat_min_us, 1.0, 1e-9);
+}
+
+TEST(Scoreboard, DroppedPulseIsTheFirstDivergence) {
+  auto ps = pulses(kFig2);
+  ps.erase(ps.begin() + 6);  // pulse 7 (+X) missing: the engine's 7th is +Y
+  const Row r = judge(fig2(), expect(fig2()), 4e3, commands(11), run_of("rtl", ps, 1));
+  EXPECT_EQ(r.verdict, "FAIL");
+  ASSERT_TRUE(r.divergence);
+  EXPECT_EQ(r.divergence->index, 7u);
+  EXPECT_EQ(r.divergence->summary, "pulse 7: model +X, rtl +Y");
+  EXPECT_NE(r.divergence->context.find("> #7"), std::string::npos) << r.divergence->context;
+}
+
+TEST(Scoreboard, SwappedPulsesAreCaught) {
+  auto ps = pulses(kFig5);
+  std::swap(ps[4], ps[5]);  // +Y -X becomes -X +Y at pulses 5, 6
+  const Row r = judge(fig5(), expect(fig5()), 1e3, commands(12), run_of("8085", ps, 0));
+  EXPECT_EQ(r.verdict, "FAIL");
+  ASSERT_TRUE(r.divergence);
+  EXPECT_EQ(r.divergence->summary, "pulse 5: model +Y, 8085 -X");
+  EXPECT_EQ(r.mismatches, 2u);
+}
+
+TEST(Scoreboard, ExtraPulseIsAMismatch) {
+  auto ps = pulses(kFig2);
+  ps.push_back(Pulse{Axis::X, 1});
+  const Row r = judge(fig2(), expect(fig2()), 1e3, commands(11), run_of("iss", ps, 0));
+  EXPECT_EQ(r.verdict, "FAIL");
+  ASSERT_TRUE(r.divergence);
+  EXPECT_EQ(r.divergence->index, 12u);
+}
+
+TEST(Scoreboard, LossesFlaggedOneForOneAreFlaggedNotFailed) {
+  auto ps = pulses(kFig2);
+  ps.resize(8);  // a prefix: 3 command pulses gave nothing
+  const Row ok = judge(fig2(), expect(fig2()), 50e3, commands(11), run_of("8085", ps, 3));
+  EXPECT_EQ(ok.verdict, "FLAGGED") << ok.note;
+  EXPECT_EQ(ok.lost, 3u);
+  const Row under = judge(fig2(), expect(fig2()), 50e3, commands(11), run_of("8085", ps, 2));
+  EXPECT_EQ(under.verdict, "FAIL");
+  const Row over = judge(fig2(), expect(fig2()), 50e3, commands(11), run_of("8085", pulses(kFig2), 1));
+  EXPECT_EQ(over.verdict, "FAIL");
+}
+
+TEST(Scoreboard, TheCoreMayNotLoseUpTo250kppsEvenIfFlagged) {
+  auto ps = pulses(kFig2);
+  ps.resize(10);
+  EXPECT_EQ(judge(fig2(), expect(fig2()), 250e3, commands(11), run_of("rtl", ps, 1)).verdict, "FAIL");
+  EXPECT_EQ(judge(fig2(), expect(fig2()), 500e3, commands(11), run_of("rtl", ps, 1)).verdict, "FLAGGED");
+  EXPECT_EQ(judge(fig2(), expect(fig2()), 1e3, commands(11), run_of("iss", ps, 1)).verdict, "FAIL");
+}
+
+TEST(Scoreboard, WrongFinalPositionFails) {
+  auto run = run_of("rtl", pulses(kFig2), 0);
+  run.position_known = true;
+  run.x = 6;
+  run.y = 4;
+  const Row r = judge(fig2(), expect(fig2()), 1e3, commands(11), run);
+  EXPECT_EQ(r.verdict, "FAIL");
+  EXPECT_NE(r.note.find("final position (6, 4), model (6, 5)"), std::string::npos) << r.note;
+}
+
+TEST(Scoreboard, VerdictLine) {
+  std::vector<Row> rows(40);
+  for (auto& r : rows) r.verdict = "PASS";
+  EXPECT_EQ(verdict_line(rows), "100.00% PASS 40 PASSED, 0 FAILED");
+  rows[3].verdict = "FAIL";
+  EXPECT_EQ(verdict_line(rows), "97.50% FAIL 39 PASSED, 1 FAILED");
+}
+
+TEST(Options, BadInputIsAOneLineUsageError) {
+  bool help = false;
+  EXPECT_THROW(parse_options({"--suite", "paper"}, help), UsageError);            // no rate
+  EXPECT_THROW(parse_options({"--suite", "nope", "--sweep"}, help), UsageError);  // unknown suite
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "fast"}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "0"}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "1k", "--sweep"}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--sweep", "--inject", "rtl:melt:3"}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--sweep", "--case", "fig9"}, help), UsageError);
+  const Options o = parse_options({"--suite", "paper", "--rate", "250k,1M,3.5k"}, help);
+  EXPECT_EQ(o.rates, (std::vector<double>{250e3, 1e6, 3.5e3}));
+}
+
+// --- whole runs, one per forked child -------------------------------------------------
+
+struct ChildRow {
+  std::string case_name, engine, verdict, summary;
+  double rate = 0;
+  std::uint64_t pulses = 0, lost = 0, mismatches = 0, div_index = 0;
+  std::int64_t overruns = 0;
+  double lat_min = -1, lat_max = -1;
+};
+
+// Runs `opt` in a child process; returns its rows.
+std::vector<ChildRow> run_child(Options opt) {
+  int fd[2];
+  if (::pipe(fd) != 0) ADD_FAILURE() << "pipe";
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::close(fd[0]);
+    std::ostringstream o;
+    int code = 0;
+    try {
+      const Outcome out = run_cosim(opt);
+      for (const auto& r : out.rows)
+        o << r.case_name << '\t' << r.engine << '\t' << r.rate_pps << '\t' << r.verdict << '\t' << r.pulses << '\t'
+          << r.lost << '\t' << r.overruns << '\t' << r.mismatches << '\t'
+          << (r.divergence ? r.divergence->index : 0) << '\t'
+          << (r.divergence ? r.divergence->summary : std::string("-")) << '\t'
+          << (r.has_latency ? r.lat_min_us : -1) << '\t' << (r.has_latency ? r.lat_max_us : -1) << '\n';
+    } catch (const std::exception& e) {
+      o << "ERROR\t" << e.what() << '\n';
+      code = 3;
+    }
+    const std::string s = o.str();
+    for (std::size_t done = 0; done < s.size();) {
+      const auto n = ::write(fd[1], s.data() + done, s.size() - done);
+      if (n <= 0) break;
+      done += static_cast<std::size_t>(n);
+    }
+    ::close(fd[1]);
+    std::_Exit(code);
+  }
+  ::close(fd[1]);
+  std::string text;
+  char buf[4096];
+  for (ssize_t n; (n = ::read(fd[0], buf, sizeof buf)) > 0;) text.append(buf, static_cast<std::size_t>(n));
+  ::close(fd[0]);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << text;
+  std::vector<ChildRow> rows;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream l(line);
+    ChildRow r;
+    std::string f;
+    std::vector<std::string> fs;
+    while (std::getline(l, f, '\t')) fs.push_back(f);
+    if (fs.size() != 12) continue;
+    r.case_name = fs[0];
+    r.engine = fs[1];
+    r.rate = std::stod(fs[2]);
+    r.verdict = fs[3];
+    r.pulses = std::stoull(fs[4]);
+    r.lost = std::stoull(fs[5]);
+    r.overruns = std::stoll(fs[6]);
+    r.mismatches = std::stoull(fs[7]);
+    r.div_index = std::stoull(fs[8]);
+    r.summary = fs[9];
+    r.lat_min = std::stod(fs[10]);
+    r.lat_max = std::stod(fs[11]);
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+const ChildRow* find(const std::vector<ChildRow>& rows, const std::string& c, const std::string& e, double rate) {
+  for (const auto& r : rows)
+    if (r.case_name == c && r.engine == e && r.rate == rate) return &r;
+  return nullptr;
+}
+
+Options paper_at(std::vector<double> rates) {
+  Options o;
+  o.suite = "paper";
+  o.rates = std::move(rates);
+  return o;
+}
+
+// The paper suite at a few rates on every engine: the model and the core
+// agree everywhere up to 250 kpps; the 8085 (ISS and Verilog board) agrees
+// at 1 kpps and flags every loss at 250 kpps; ISS and board lose the same.
+TEST(CosimRun, ReducedSweepOfThePaperSuite) {
+  const std::vector<double> rates = {1e3, 4e3, 20e3, 250e3};
+  const auto rows = run_child(paper_at(rates));
+  ASSERT_EQ(rows.size(), 2u * 4u * 4u);
+  for (const auto& r : rows) {
+    EXPECT_NE(r.verdict, "FAIL") << r.case_name << " " << r.engine << " @ " << r.rate << ": " << r.summary;
+    if (r.engine == "model" || r.engine == "rtl") {
+      EXPECT_EQ(r.lost, 0u) << r.case_name << " " << r.engine << " @ " << r.rate;
+      EXPECT_EQ(r.mismatches, 0u);
+    }
+  }
+  for (const char* c : {"fig2", "fig5"}) {
+    for (const char* e : {"iss", "8085"}) {
+      const ChildRow* slow = find(rows, c, e, 1e3);
+      const ChildRow* fast = find(rows, c, e, 250e3);
+      ASSERT_TRUE(slow && fast);
+      EXPECT_EQ(slow->verdict, "PASS");
+      EXPECT_EQ(fast->verdict, "FLAGGED");  // 4 us between commands: the routine takes tens
+      EXPECT_GT(fast->lost, 0u);
+      EXPECT_EQ(static_cast<std::int64_t>(fast->lost), fast->overruns);
+    }
+    for (double rate : rates) {
+      const ChildRow* iss = find(rows, c, "iss", rate);
+      const ChildRow* board = find(rows, c, "8085", rate);
+      ASSERT_TRUE(iss && board);
+      EXPECT_EQ(iss->lost, board->lost) << c << " @ " << rate;
+    }
+    // The core answers within a few of its 20 ns clocks: well inside 4 us.
+    const ChildRow* core = find(rows, c, "rtl", 250e3);
+    ASSERT_TRUE(core);
+    EXPECT_GT(core->lat_min, 0.0);
+    EXPECT_LT(core->lat_max, 1.0);
+  }
+}
+
+// A corrupted engine is caught, with the right first divergence.
+TEST(CosimRun, DroppedPulseOnTheIssIsCaught) {
+  Options o = paper_at({1e3});
+  o.engines = {"model", "iss"};
+  o.faults = {parse_fault("iss:drop:3")};
+  const auto rows = run_child(o);
+  const ChildRow* r = find(rows, "fig2", "iss", 1e3);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->verdict, "FAIL");
+  EXPECT_EQ(r->div_index, 3u);
+  EXPECT_EQ(r->summary, "pulse 3: model +X, iss +Y");
+  const ChildRow* m = find(rows, "fig2", "model", 1e3);
+  ASSERT_TRUE(m);
+  EXPECT_EQ(m->verdict, "PASS");
+}
+
+TEST(CosimRun, SwappedPulsesOnTheCoreAreCaught) {
+  Options o = paper_at({250e3});
+  o.engines = {"model", "rtl"};
+  o.faults = {parse_fault("rtl:swap:5")};
+  const auto rows = run_child(o);
+  const ChildRow* r = find(rows, "fig5", "rtl", 250e3);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->verdict, "FAIL");
+  EXPECT_EQ(r->div_index, 5u);
+  EXPECT_EQ(r->summary, "pulse 5: model +Y, rtl -X");
+}
+
+TEST(CosimRun, FlippedSignOnTheBoardIsCaught) {
+  Options o = paper_at({1e3});
+  o.engines = {"model", "8085"};
+  o.cases = {"fig5"};
+  o.faults = {parse_fault("8085:flip:12")};
+  const auto rows = run_child(o);
+  const ChildRow* r = find(rows, "fig5", "8085", 1e3);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->verdict, "FAIL");
+  EXPECT_EQ(r->summary, "pulse 12: model -X, 8085 +X");
+}
+
+// The core's clock runs only after command pulses and bus accesses (a
+// speed-up); a free-running clock must give the same pulses at the same times.
+TEST(CosimRun, GatedCoreClockEqualsFreeRunning) {
+  Options o;
+  o.suite = "smoke";
+  o.cases = {"arc-3q"};
+  o.rates = {20e3, 1e6};
+  o.engines = {"model", "rtl"};
+  const auto gated = run_child(o);
+  o.free_clock = true;
+  const auto free = run_child(o);
+  ASSERT_EQ(gated.size(), free.size());
+  ASSERT_FALSE(gated.empty());
+  for (std::size_t i = 0; i < gated.size(); ++i) {
+    EXPECT_EQ(gated[i].verdict, free[i].verdict);
+    EXPECT_EQ(gated[i].pulses, free[i].pulses);
+    EXPECT_EQ(gated[i].lost, free[i].lost);
+    EXPECT_EQ(gated[i].overruns, free[i].overruns);
+    EXPECT_DOUBLE_EQ(gated[i].lat_min, free[i].lat_min);
+    EXPECT_DOUBLE_EQ(gated[i].lat_max, free[i].lat_max);
+  }
+}
+
+}  // namespace
+}  // namespace contour::cosim

@@ -29,6 +29,23 @@ void align(const sc_time& period) {
 
 Pulse step_pulse(Axis a, bool dir_negative) { return Pulse{a, static_cast<std::int8_t>(dir_negative ? -1 : +1)}; }
 
+// The move the program works on (or finished last) and its position, from
+// the mailbox: the slot MB_ACTIVE names, else (idle) the latest queued move
+// whose slot says done. Nothing when no move has started.
+std::optional<std::pair<int, State>> current_move(std::span<const std::uint8_t, 256> mb, const sw8085::Codes& codes,
+                                                  const std::vector<std::unique_ptr<sw8085::SlotMove>>& queued,
+                                                  const std::array<int, 2>& slot_move) {
+  const std::uint8_t active = mb[sw8085::kActive];
+  int pick = -1;
+  for (int i = 0; i < 2; ++i)
+    if (slot_move[i] >= 0 && queued[slot_move[i]]->base == active) pick = slot_move[i];
+  if (pick < 0)
+    for (int i = 0; i < 2; ++i)
+      if (slot_move[i] >= 0 && codes.is_done(mb[queued[slot_move[i]]->base])) pick = std::max(pick, slot_move[i]);
+  if (pick < 0) return std::nullopt;
+  return std::make_pair(pick, sw8085::decode(*queued[pick], mb, codes, 0));
+}
+
 }  // namespace
 
 // --- faults --------------------------------------------------------------------
@@ -331,11 +348,8 @@ void IssEngine::feed() {
   }
 }
 
-int IssEngine::active_move() const {
-  const std::uint8_t base = host_->bus().mem[sw8085::kMailbox + sw8085::kActive];
-  for (int i = 0; i < 2; ++i)
-    if (slot_move_[i] >= 0 && queued_[slot_move_[i]]->base == base) return slot_move_[i];
-  return -1;
+std::span<const std::uint8_t, 256> IssEngine::mailbox() const {
+  return std::span<const std::uint8_t, 256>(host_->bus().mem.data() + sw8085::kMailbox, 256);
 }
 
 void IssEngine::collect() {
@@ -349,13 +363,11 @@ void IssEngine::collect() {
     }
     ++pulses_;
     std::string state;
-    const int mi = active_move();
-    if (mi >= 0) {
-      try {
-        state = to_string(host_->state(*queued_[mi], 0));
-      } catch (const std::exception& e) {
-        state = std::string("(mailbox: ") + e.what() + ")";
-      }
+    try {
+      if (const auto cur = current_move(mailbox(), host_->codes(), queued_, slot_move_))
+        state = "move " + std::to_string(cur->first + 1) + ": " + to_string(cur->second);
+    } catch (const std::exception& e) {
+      state = std::string("(mailbox: ") + e.what() + ")";
     }
     emit(*p, state);
   }
@@ -407,14 +419,16 @@ void IssEngine::end_case(EngineRun& run) {
   run.error = error_;
   run.overruns_known = true;
   run.overruns = host_->overruns();
-  const int mi = active_move();
   run.position_known = true;
-  if (mi < 0) {
-    run.x = run.y = 0;
-  } else {
-    const State s = host_->state(*queued_[mi], 0);
-    run.x = moves_[mi].origin_x + s.x;
-    run.y = moves_[mi].origin_y + s.y;
+  run.x = run.y = 0;
+  try {
+    if (const auto cur = current_move(mailbox(), host_->codes(), queued_, slot_move_)) {
+      run.x = moves_[cur->first].origin_x + cur->second.x;
+      run.y = moves_[cur->first].origin_y + cur->second.y;
+    }
+  } catch (const std::exception& e) {
+    run.position_known = false;
+    run.error += (run.error.empty() ? "" : "; ") + std::string("mailbox: ") + e.what();
   }
 }
 
@@ -532,7 +546,7 @@ bool BoardEngine::slot_free(int i) {
   if (slot_move_[i] < 0) return true;
   const std::uint8_t base = sw8085::kSlots[i];
   const std::uint8_t mode = peek(base);
-  if (mode != codes_->fin_p && mode != codes_->fin_n) return false;
+  if (!codes_->is_done(mode)) return false;
   return peek(sw8085::kActive) != base;
 }
 
@@ -608,17 +622,14 @@ void BoardEngine::end_case(EngineRun& run) {
   run.overruns = mb[sw8085::kOverruns] | mb[sw8085::kOverruns + 1] << 8 | mb[sw8085::kOverruns + 2] << 16;
   run.position_known = true;
   run.x = run.y = 0;
-  const std::uint8_t active = mb[sw8085::kActive];
-  for (int i = 0; i < 2; ++i) {
-    if (slot_move_[i] < 0 || queued_[slot_move_[i]]->base != active) continue;
-    try {
-      const State s = sw8085::decode(*queued_[slot_move_[i]], std::span<const std::uint8_t, 256>(mb), *codes_, 0);
-      run.x = moves_[slot_move_[i]].origin_x + s.x;
-      run.y = moves_[slot_move_[i]].origin_y + s.y;
-    } catch (const std::exception& e) {
-      run.position_known = false;
-      run.error += (run.error.empty() ? "" : "; ") + std::string("mailbox: ") + e.what();
+  try {
+    if (const auto cur = current_move(std::span<const std::uint8_t, 256>(mb), *codes_, queued_, slot_move_)) {
+      run.x = moves_[cur->first].origin_x + cur->second.x;
+      run.y = moves_[cur->first].origin_y + cur->second.y;
     }
+  } catch (const std::exception& e) {
+    run.position_known = false;
+    run.error += (run.error.empty() ? "" : "; ") + std::string("mailbox: ") + e.what();
   }
 }
 

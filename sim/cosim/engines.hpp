@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -191,7 +192,7 @@ class IssEngine final : public CosimEngine {
   void on_cmd();
   void feed();
   void collect();
-  int active_move() const;  // index of the move the program started last, -1: none
+  std::span<const std::uint8_t, 256> mailbox() const;
   sc_core::sc_time period_;
   std::unique_ptr<sw8085::Host> host_;
   std::vector<Placed> moves_;

@@ -10,9 +10,12 @@
 #include "report.hpp"
 #include "top.hpp"
 
+// SystemC prints its banner before sc_main unless told not to; stdout is the
+// run's summary. A static initialiser runs before SystemC's main().
+static const int kNoBanner = ::setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);
+
 int sc_main(int argc, char** argv) {
   using namespace contour::cosim;
-  ::setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);  // stdout is the report's summary
   std::vector<std::string> args(argv + 1, argv + argc);
   Options opt;
   try {
