@@ -196,7 +196,7 @@ std::uint64_t pulse_bound(const Move& m) {
 
 }  // namespace
 
-RunResult Host::run(const Move& m, std::vector<CommandResult>* commands) {
+RunResult Host::run(const Move& m, std::vector<CommandResult>* commands, std::uint64_t max_pulses) {
   validate<24>(m);
   RunResult r;
   if (!m.is_arc() && m.xe == 0 && m.ye == 0) {
@@ -207,7 +207,7 @@ RunResult Host::run(const Move& m, std::vector<CommandResult>* commands) {
   const SlotMove sm = queue(m);
   settle();  // the main loop starts the move before the first command pulse
   r.initial_state = state(sm, 0);
-  const std::uint64_t bound = pulse_bound(m);
+  const std::uint64_t bound = max_pulses ? max_pulses : pulse_bound(m);
   std::uint64_t n = 0;
   while (!done(sm)) {
     const CommandResult c = command();

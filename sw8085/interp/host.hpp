@@ -84,7 +84,8 @@ class Host {
 
   // Runs a move to its end, one command pulse at a time (the Engine seam);
   // `commands` gets the T-states and instructions of each.
-  RunResult run(const Move& m, std::vector<CommandResult>* commands = nullptr);
+  // A run longer than `max_pulses` (0: a bound from the move's size) throws.
+  RunResult run(const Move& m, std::vector<CommandResult>* commands = nullptr, std::uint64_t max_pulses = 0);
 
   // Command pulses every `period` T-states (the first one `period` after
   // the call) until `moves` are all done, the host queueing each as soon as

@@ -25,13 +25,19 @@ void expect_same(const Move& m, const RunResult& got, const RunResult& want) {
 TEST(Program, PaperFig2Line) {
   Host h;
   const Move m = Move::line(6, 5);
-  expect_same(m, h.run(m), run_model<24>(m));
+  {
+        const RunResult want = run_model<24>(m);
+        expect_same(m, h.run(m, nullptr, want.steps.size() + 1), want);
+      }
 }
 
 TEST(Program, PaperFig5Arc) {
   Host h;
   const Move m = Move::arc(6, 0, 0, 6, Sense::CCW);
-  expect_same(m, h.run(m), run_model<24>(m));
+  {
+        const RunResult want = run_model<24>(m);
+        expect_same(m, h.run(m, nullptr, want.steps.size() + 1), want);
+      }
 }
 
 }  // namespace
@@ -49,7 +55,10 @@ TEST(Program, AllSmallLines) {
   for (int xe = -n; xe <= n; ++xe)
     for (int ye = -n; ye <= n; ++ye) {
       const Move m = Move::line(xe, ye);
-      expect_same(m, h.run(m), run_model<24>(m));
+      {
+        const RunResult want = run_model<24>(m);
+        expect_same(m, h.run(m, nullptr, want.steps.size() + 1), want);
+      }
       if (HasFatalFailure()) return;
     }
 }
@@ -72,7 +81,10 @@ TEST(Program, AllSmallArcs) {
             } catch (const InputError&) {
               continue;
             }
-            expect_same(m, h.run(m), run_model<24>(m));
+            {
+        const RunResult want = run_model<24>(m);
+        expect_same(m, h.run(m, nullptr, want.steps.size() + 1), want);
+      }
             if (HasFatalFailure()) return;
             ++runs;
           }

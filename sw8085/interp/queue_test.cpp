@@ -53,7 +53,7 @@ TEST(Random24, WholeLinesAcrossByteBoundaries) {
   for (auto [xe, ye] : {std::pair<std::int64_t, std::int64_t>{65537, 3}, {-2, 65536}, {256, 255}, {-257, -512},
                         {70000, -69999}, {65535, 1}}) {
     const Move m = Move::line(xe, ye);
-    const RunResult got = h.run(m), want = run_model<24>(m);
+    const RunResult want = run_model<24>(m), got = h.run(m, nullptr, want.steps.size() + 1);
     ASSERT_EQ(got.steps.size(), want.steps.size()) << describe(m);
     for (std::size_t i = 0; i < want.steps.size(); ++i) {
       ASSERT_EQ(got.steps[i].pulse, want.steps[i].pulse) << describe(m) << " pulse " << i + 1;
@@ -77,7 +77,7 @@ Move short_arc(std::int64_t xs, std::int64_t ys, Sense s, int n) {
 
 void expect_arc(const Move& m) {
   Host h;
-  const RunResult got = h.run(m), want = run_model<24>(m);
+  const RunResult want = run_model<24>(m), got = h.run(m, nullptr, want.steps.size() + 1);
   ASSERT_EQ(got.steps.size(), want.steps.size()) << describe(m);
   for (std::size_t i = 0; i < want.steps.size(); ++i) {
     ASSERT_EQ(got.steps[i].pulse, want.steps[i].pulse) << describe(m) << " pulse " << i + 1;
