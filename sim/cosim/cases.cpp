@@ -37,8 +37,9 @@ std::map<std::string, Suite> build() {
   const Case fig5 = arc_case("fig5", "paper A Fig. 5: arc (6, 0) to (0, 6) CCW, 12 pulses", 6, 0, 0, 6, Sense::CCW);
   // Rates: fine around the 8085's limit (a few kpps), then decades to
   // paper A's 250 kpps; the core goes on to where its output stage refuses.
-  const std::vector<double> paper_rates = {1e3,   2e3,   2.5e3, 3e3,   3.5e3, 4e3,   4.5e3, 5e3,  6e3,
-                                           8e3,   10e3,  20e3,  50e3,  100e3, 250e3, 500e3, 1e6,  2e6};
+  const std::vector<double> paper_rates = {1e3,  2e3,  2.5e3, 3e3,   3.5e3, 4e3,   4.5e3, 5e3,   5.5e3, 6e3,
+                                           7e3,  8e3,  9e3,   10e3,  11e3,  12e3,  14e3,  16e3,  20e3,  50e3,
+                                           100e3, 250e3, 400e3, 500e3, 600e3, 700e3, 800e3, 1e6, 2e6};
   s["paper"] = Suite{"paper", "paper A's Fig. 2 (line) and Fig. 5 (arc)", {fig2, fig5}, paper_rates};
 
   const std::vector<Case> smoke_cases = {
@@ -48,7 +49,7 @@ std::map<std::string, Suite> build() {
       rounded_rectangle(),
   };
   s["smoke"] = Suite{"smoke", "signs, quadrant crossings, a full circle, chained moves", smoke_cases,
-                     {1e3, 3e3, 4e3, 5e3, 10e3, 50e3, 250e3, 1e6}};
+                     {1e3, 3e3, 4e3, 5e3, 5.5e3, 6e3, 8e3, 10e3, 11e3, 12e3, 50e3, 250e3, 500e3, 1e6}};
 
   std::vector<Case> full = {fig2, fig5};
   for (const auto& c : smoke_cases) full.push_back(c);
