@@ -269,7 +269,7 @@ Sample Interpolator::at(std::size_t n) {
   // each chord's ends are at least its own balanced offset out (the chord
   // error is then at most the offset, itself at most eps).
   double e = 0;
-  if (s.geom.kind == Segment::Kind::Arc) {
+  if (s.geom.kind == Segment::Kind::Arc && out.s > 0 && out.s < s.geom.length) {  // block ends stay exact
     const double l = std::max(out.s - s.s_at(tl - T), s.s_at(tl + T) - out.s);
     e = vertex_offset(plan_->config.chord, s.rho, l);
   }
