@@ -167,6 +167,14 @@ TEST(PaperB, ThreeDArcTakes2_46Seconds) {
   EXPECT_NEAR(full.segs[1].duration, 2.46, 0.01);
   EXPECT_EQ(full.segs[1].v_start, 0);  // 90 degree corners: exact stops
   EXPECT_EQ(full.segs[1].v_end, 0);
+  // After a stop the next block starts on a cycle: a sample sits exactly on
+  // each corner, so no chord cuts it.
+  const auto fs = interpolate(full);
+  int corners = 0;
+  for (const auto& x : fs) corners += x.p == Vec3{50, 0, 0} || x.p == Vec3{0, -47.246, -16.366};
+  EXPECT_GE(corners, 2);
+  EXPECT_NEAR(std::remainder(full.segs[1].t_begin / 1e-3, 1.0), 0.0, 1e-9);
+  EXPECT_NEAR(std::remainder(full.segs[2].t_begin / 1e-3, 1.0), 0.0, 1e-9);
 }
 
 TEST(PaperB, EveryChordWithinToleranceOfTheTrueArc) {
