@@ -34,7 +34,8 @@ Pulse step_pulse(Axis a, bool dir_negative) { return Pulse{a, static_cast<std::i
 // whose slot says done. Nothing when no move has started.
 std::optional<std::pair<int, State>> current_move(std::span<const std::uint8_t, 256> mb, const sw8085::Codes& codes,
                                                   const std::vector<std::unique_ptr<sw8085::SlotMove>>& queued,
-                                                  const std::array<int, 2>& slot_move) {
+                                                  const std::array<int, 2>& slot_move,
+                                                  const std::vector<std::uint64_t>* counts = nullptr) {
   const std::uint8_t active = mb[sw8085::kActive];
   int pick = -1;
   for (int i = 0; i < 2; ++i)
@@ -43,7 +44,8 @@ std::optional<std::pair<int, State>> current_move(std::span<const std::uint8_t, 
     for (int i = 0; i < 2; ++i)
       if (slot_move[i] >= 0 && codes.is_done(mb[queued[slot_move[i]]->base])) pick = std::max(pick, slot_move[i]);
   if (pick < 0) return std::nullopt;
-  return std::make_pair(pick, sw8085::decode(*queued[pick], mb, codes, 0));
+  const std::uint64_t n = counts && pick < static_cast<int>(counts->size()) ? (*counts)[pick] : 0;
+  return std::make_pair(pick, sw8085::decode(*queued[pick], mb, codes, n));
 }
 
 }  // namespace
@@ -330,6 +332,7 @@ void IssEngine::begin_case(const Case& c) {
   queued_.clear();
   slot_move_ = {-1, -1};
   pulses_ = 0;
+  per_move_.clear();
   edge_ = false;
   error_.clear();
   host_ = std::make_unique<sw8085::Host>();  // boots: the program is in its idle loop
@@ -364,8 +367,12 @@ void IssEngine::collect() {
     ++pulses_;
     std::string state;
     try {
-      if (const auto cur = current_move(mailbox(), host_->codes(), queued_, slot_move_))
+      if (auto cur = current_move(mailbox(), host_->codes(), queued_, slot_move_)) {
+        // The pulse belongs to this move: count it there.
+        if (per_move_.size() < queued_.size()) per_move_.resize(queued_.size(), 0);
+        cur->second.pulses = ++per_move_[cur->first];
         state = "move " + std::to_string(cur->first + 1) + ": " + to_string(cur->second);
+      }
     } catch (const std::exception& e) {
       state = std::string("(mailbox: ") + e.what() + ")";
     }

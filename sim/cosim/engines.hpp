@@ -201,6 +201,7 @@ class IssEngine final : public CosimEngine {
   std::vector<std::unique_ptr<sw8085::SlotMove>> queued_;  // in queue order
   std::array<int, 2> slot_move_{-1, -1};                   // index into queued_ per slot
   std::uint64_t pulses_ = 0;
+  std::vector<std::uint64_t> per_move_;  // output pulses of each queued move
   bool edge_ = false;
   bool active_ = false, parked_ = true;
   std::string error_;

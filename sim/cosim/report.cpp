@@ -323,7 +323,9 @@ std::vector<std::string> write_reports(const std::string& dir, const ReportInput
        "lost command pulse was flagged (allowed above an engine's limit). <b>FAIL</b>: a pulse differs, a loss was "
        "not flagged, the final position is wrong, or an engine lost pulses where it must keep up (the core up to "
        + rate_label(kCoreRequiredRate) + " pps, the 8085 up to " + rate_label(kRequiredRate8085) +
-       " pps). Cells read <i>verdict lost/overruns</i>.</p>\n";
+       " pps). Cells read <i>verdict lost/overruns</i>. In a divergence, <i>at (x, y)</i> is the position on the case's "
+       "path (its start is (0, 0)); the states are in the move's own frame (a line from its start, an arc from its "
+       "centre), as in docs/algorithm.md.</p>\n";
 
   // Limits.
   h << "<h2>Where each engine falls behind</h2>\n<table><tr><th class=\"l\">case</th>";

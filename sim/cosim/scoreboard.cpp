@@ -64,13 +64,14 @@ Divergence make_divergence(const std::string& engine, const Expected& exp, const
     const bool has_m = i < exp.pulses.size(), has_e = i < run.out.size();
     if (!has_m && !has_e) break;
     o << (i == k ? "> " : "  ") << "#" << (i + 1) << "\n";
-    o << "    model:  ";
+    auto label = [](const std::string& who) { return who + ":" + std::string(who.size() < 7 ? 7 - who.size() : 1, ' '); };
+    o << "    " << label("model");
     if (has_m)
       o << to_string(exp.pulses[i]) << "  at " << pos_text(exp.pos[i + 1].first, exp.pos[i + 1].second) << "  "
         << exp.states[i];
     else
       o << "(no pulse)";
-    o << "\n    " << engine << ":" << std::string(engine.size() < 6 ? 6 - engine.size() : 0, ' ') << "  ";
+    o << "\n    " << label(engine);
     if (has_e) {
       const auto& e = run.out[i];
       o << to_string(e.pulse) << "  at " << pos_text(epos[i + 1].first, epos[i + 1].second) << "  t = "
