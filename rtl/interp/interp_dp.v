@@ -301,7 +301,7 @@ module interp_dp #(
 
   wire signed [2*W+5:0] ci_s = $signed({{(W+6){1'b0}}, ci_q});
   wire signed [2*W+5:0] co_s = $signed({{(W+6){1'b0}}, co_q});
-  wire signed [2*W+5:0] d_s = {{W{d_q[W+1]}}, d_q};
+  wire signed [2*W+5:0] d_s = {{(W+4){d_q[W+1]}}, d_q};
   wire signed [2*W+5:0] sub_s = $signed({{(W+5){1'b0}}, sub_q});
   wire signed [2*W+5:0] add_s = $signed({{(W+5){1'b0}}, add_q});
   wire signed [2*W+5:0] r2_s = $signed({2'b00, r2_f});
@@ -332,7 +332,9 @@ module interp_dp #(
         // Line: D = A*y - B*x, within [-B, A] (D < A unless A = 0), and
         // the distance travelled never passes the end point.
         assert(k_q == 3'd0);
+`ifndef FORMAL_NO_MUL
         assert(d_s == add_s * co_s - sub_s * ci_s);
+`endif
         assert(d_s >= -sub_s && d_s <= add_s);
         assert({2'b00, ci_q} <= ti_f && {2'b00, co_q} <= to_f);
         assert(ti_f == {1'b0, add_q} && to_f == {1'b0, sub_q});
@@ -344,7 +346,9 @@ module interp_dp #(
         assert(co_ti_q == ({2'b00, co_q} == ti_f));
         assert(sub_q == {ci_q, 1'b0} - 1'b1);
         assert(add_q == {co_q, 1'b1});
+`ifndef FORMAL_NO_MUL
         assert(d_s == ci_s * ci_s + co_s * co_s - r2_s);
+`endif
         if (k_q == 3'd0) begin
           assert({2'b00, ci_q} >= ti_f);
           assert({2'b00, co_q} <= to_f);
@@ -356,7 +360,7 @@ module interp_dp #(
   // At most one unit of motion per clock: the pulse moves exactly one axis
   // by one, and no register changes without a step or a load.
   always @(posedge i_clk) begin
-    if (past_valid_f && !$past(i_rst) && !i_rst && !$past(ld) && !$past(st)) begin
+    if (past_valid_f && loaded_f && !$past(i_rst) && !i_rst && !$past(ld) && !$past(st)) begin
       assert(d_q == $past(d_q) && ci_q == $past(ci_q) && co_q == $past(co_q));
       assert(o_pulse == 1'b0);
     end

@@ -33,3 +33,6 @@ dp_up5k_SRCS := $(dp_hx8k_SRCS)
 dp_up5k_DEFS := -DDESIGN_DP
 dp_up5k_INC := $(INTERP_DIR)
 dp_up5k_DEV := up5k
+# timing_wrap puts the clock on SB_GB itself; without promotion nextpnr
+# keeps high-fanout enables off the global nets (faster here).
+$(foreach d,core_hx8k core_up5k top_hx8k top_up5k dp_hx8k dp_up5k,$(eval $(d)_PNR := --no-promote-globals))
