@@ -1,5 +1,6 @@
 #include "cases.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -10,18 +11,18 @@ namespace contour::cosim {
 namespace {
 
 Case line_case(std::string name, std::string title, std::int64_t xe, std::int64_t ye) {
-  return Case{std::move(name), std::move(title), {Move::line(xe, ye)}};
+  return Case{std::move(name), std::move(title), {Move::line(xe, ye)}, {}};
 }
 
 Case arc_case(std::string name, std::string title, std::int64_t xs, std::int64_t ys, std::int64_t xe,
               std::int64_t ye, Sense s) {
-  return Case{std::move(name), std::move(title), {Move::arc(xs, ys, xe, ye, s)}};
+  return Case{std::move(name), std::move(title), {Move::arc(xs, ys, xe, ye, s)}, {}};
 }
 
 // A rounded rectangle, 40 x 24 with corner radius 8, CCW: lines and
 // quarter arcs chained, so that moves follow each other in the queues.
 Case rounded_rectangle() {
-  Case c{"slot", "rounded rectangle: 4 lines + 4 quarter arcs, back to back", {}};
+  Case c{"slot", "rounded rectangle: 4 lines + 4 quarter arcs, back to back", {}, {}};
   const std::int64_t r = 8;
   c.moves = {
       Move::line(40, 0),  Move::arc(0, -r, r, 0, Sense::CCW),  Move::line(0, 24),
@@ -54,11 +55,14 @@ std::map<std::string, Suite> build() {
   std::vector<Case> full = {fig2, fig5};
   for (const auto& c : smoke_cases) full.push_back(c);
   full.push_back(line_case("line-long", "line to (300, -113)", 300, -113));
-  full.push_back(line_case("line-y", "pure Y line to (0, -40)", 0, -40));
+  // The worst pulses `contour table1` finds (sw8085/interp on the ISS):
+  full.push_back(line_case("line-y", "pure Y line to (0, -300) (table1's worst linear pulse)", 0, -300));
+  full.push_back(arc_case("circle-100", "full circle R = 100 CCW from (100, 0) (table1's worst circular pulse)", 100, 0,
+                          100, 0, Sense::CCW));
   full.push_back(arc_case("circle-ccw", "full circle R = 50 CCW from (30, 40)", 30, 40, 30, 40, Sense::CCW));
-  full.push_back(arc_case("arc-big", "arc R = 1000 (600, 800) to (-800, 600) CCW", 600, 800, -800, 600, Sense::CCW));
-  s["full"] = Suite{"full", "paper + smoke + long lines and large circles", full,
-                    {1e3, 2e3, 3e3, 3.5e3, 4e3, 4.5e3, 5e3, 6e3, 10e3, 50e3, 100e3, 250e3, 500e3, 1e6, 2e6}};
+  s["full"] = Suite{"full", "paper + smoke + long lines and larger circles", full,
+                    {1e3, 2e3, 3e3, 4e3, 5e3, 5.5e3, 6e3, 7e3, 8e3, 9e3, 10e3, 11e3, 12e3, 50e3, 100e3, 250e3, 500e3,
+                     1e6}};
   return s;
 }
 
@@ -81,6 +85,30 @@ const Suite& suite(const std::string& name) {
 }
 
 std::vector<std::string> suite_names() { return {"paper", "smoke", "full"}; }
+
+Suite combined(const std::string& names) {
+  Suite out;
+  std::size_t start = 0;
+  while (start <= names.size()) {
+    const auto comma = names.find(',', start);
+    const std::string name = names.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    start = comma == std::string::npos ? names.size() + 1 : comma + 1;
+    const Suite& s = suite(name);
+    out.name += (out.name.empty() ? "" : ",") + s.name;
+    out.summary += (out.summary.empty() ? "" : "; ") + s.summary;
+    for (Case c : s.cases) {
+      bool dup = false;
+      for (const auto& have : out.cases) dup |= have.name == c.name;
+      if (dup) continue;
+      c.rates = s.rates;
+      out.cases.push_back(std::move(c));
+    }
+    out.rates.insert(out.rates.end(), s.rates.begin(), s.rates.end());
+  }
+  std::sort(out.rates.begin(), out.rates.end());
+  out.rates.erase(std::unique(out.rates.begin(), out.rates.end()), out.rates.end());
+  return out;
+}
 
 bool engine_runs_at(const std::string& engine, double rate_pps) {
   if (engine == "iss" || engine == "8085") return rate_pps <= kMaxRate8085;

@@ -17,6 +17,7 @@ struct Case {
   std::string name;   // short, for tables and file names
   std::string title;  // one line for the report
   std::vector<Move> moves;
+  std::vector<double> rates;  // set by combined(): its suite's sweep
 };
 
 struct Suite {
@@ -30,6 +31,11 @@ struct Suite {
 // and listing the known ones.
 const Suite& suite(const std::string& name);
 std::vector<std::string> suite_names();
+
+// One or more suites, "paper,smoke": their cases (a case in several once)
+// and the union of their rates; each case keeps its own suite's sweep in
+// Case::rates. Throws std::invalid_argument for an unknown name.
+Suite combined(const std::string& names);
 
 // The engines a co-simulation can run, in report order.
 inline const std::vector<std::string>& engine_names() {

@@ -46,7 +46,7 @@ double parse_rate(const std::string& text, const std::string& what) {
 }
 
 std::string usage() {
-  return "usage: contour cosim --suite paper|smoke|full (--rate R[,R...] | --sweep) [--report DIR] [--trace]\n"
+  return "usage: contour cosim --suite paper|smoke|full[,...] (--rate R[,R...] | --sweep) [--report DIR] [--trace]\n"
          "         [--engines model,rtl,iss,8085] [--case NAME[,NAME...]] [--progress|--no-progress]\n"
          "         [--free-clock] [--step-len N] [--step-space N] [--inject ENGINE:drop|swap|flip:N]\n"
          "  Co-simulates the golden model, the Verilog core (rtl), the 8085 program on the ISS (iss)\n"
@@ -78,7 +78,7 @@ Options parse_options(const std::vector<std::string>& args, bool& help) {
     } else if (a == "--suite") {
       o.suite = value();
       try {
-        suite(o.suite);
+        combined(o.suite);
       } catch (const std::invalid_argument& e) {
         throw UsageError(std::string("--suite: ") + e.what());
       }
@@ -141,7 +141,7 @@ Options parse_options(const std::vector<std::string>& args, bool& help) {
   if (!have_suite) throw UsageError("--suite is required (paper, smoke or full)");
   if (sweep == !o.rates.empty()) throw UsageError("give exactly one of --rate R and --sweep");
   if (!o.cases.empty()) {
-    const Suite& s = suite(o.suite);
+    const Suite s = combined(o.suite);
     for (const auto& c : o.cases) {
       bool found = false;
       for (const auto& sc : s.cases) found |= sc.name == c;

@@ -68,12 +68,15 @@ class Top : public sc_core::sc_module {
 
   void control() {
     std::size_t total = 0, done = 0;
+    auto runs = [](const Case& c, double r) { return std::find(c.rates.begin(), c.rates.end(), r) != c.rates.end(); };
     for (double r : rates_)
-      for (const auto& s : slots_)
-        if (engine_runs_at(s->engine->engine(), r)) total += cases_.size();
+      for (const auto& c : cases_)
+        for (const auto& s : slots_)
+          if (runs(c, r) && engine_runs_at(s->engine->engine(), r)) ++total;
     for (double rate : rates_) {
       for (std::size_t ci = 0; ci < cases_.size(); ++ci) {
         const Case& c = cases_[ci];
+        if (!runs(c, rate)) continue;
         const Expected& exp = exps_[ci];
         std::vector<Slot*> act;
         std::map<Slot*, std::string> errors;
@@ -138,7 +141,7 @@ Outcome run_cosim(const Options& opt) {
   if (g_ran) throw std::logic_error("run_cosim: one SystemC elaboration per process");
   g_ran = true;
   const auto wall0 = std::chrono::steady_clock::now();
-  const Suite& s = suite(opt.suite);
+  const Suite s = combined(opt.suite);
   std::vector<Case> cases;
   for (const auto& c : s.cases)
     if (opt.cases.empty() || std::find(opt.cases.begin(), opt.cases.end(), c.name) != opt.cases.end())
@@ -150,7 +153,10 @@ Outcome run_cosim(const Options& opt) {
   }
   std::vector<Expected> exps;
   for (const auto& c : cases) exps.push_back(expect(c));
+  // --rate: every case at those rates; --sweep: each case at its suite's.
   const std::vector<double> rates = opt.rates.empty() ? s.rates : opt.rates;
+  if (!opt.rates.empty())
+    for (auto& c : cases) c.rates = opt.rates;
   for (double r : rates)
     if (!(r >= 1 && r <= 50e6)) throw std::invalid_argument("rate " + std::to_string(r) + " pps is outside 1 .. 50M");
 
