@@ -1,10 +1,12 @@
-// The same program on the Verilated 8085 (rtl/cpu8085) with the C++ board:
-// the engine "8085". Built only when Verilator is there.
+// The same program on the Verilated 8085 CPU (rtl/cpu8085) with the C++
+// board, and on the Verilated board rtl/board8085 (the engine "8085").
+// Built only when Verilator is there.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 
 #include "interp/engine.hpp"
+#include "sw8085/interp/board_factory.hpp"
 #include "sw8085/interp/host.hpp"
 
 #ifdef SW8085_HAVE_RTL
@@ -59,6 +61,35 @@ TEST(Rtl, ByteBoundariesOfTheCounters) {
 TEST(Rtl, OverrunsAreCountedOnTheVerilogCpu) {
   Host h(Program::builtin(), rtl);
   const auto t = h.drive({Move::line(40, -17), Move::arc(9, 2, -2, 9, Sense::CCW)}, 100.0);
+  ASSERT_TRUE(t.all_done);
+  EXPECT_GT(t.overruns, 0u);
+  EXPECT_EQ(t.commands, t.pulses + t.overruns + t.idle_commands);
+}
+
+// The engine "8085": the board in Verilog.
+TEST(Board, PaperExamplesSmallMovesQueueAndOverruns) {
+  const auto board = board_factory();
+  if (!board) GTEST_SKIP() << "rtl/board8085 is not built";
+  {
+    // One board at a time: two Verilated boards alive together deadlock in
+    // their destructors (Verilator 5.006, VerilatedContextImp::scopeErase).
+    Host h(Program::builtin(), board);
+    expect_same(h, Move::line(6, 5));
+    expect_same(h, Move::arc(6, 0, 0, 6, Sense::CCW));
+    for (int xe = -3; xe <= 3; ++xe)
+      for (int ye = -3; ye <= 3; ++ye) {
+        expect_same(h, Move::line(xe, ye));
+        if (HasFatalFailure()) return;
+      }
+    for (Sense s : {Sense::CCW, Sense::CW}) {
+      expect_same(h, Move::arc(5, 0, 5, 0, s));
+      expect_same(h, Move::arc(-3, 4, 4, -3, s));
+      if (HasFatalFailure()) return;
+  }
+    expect_same(h, Move::line(257, -2));
+  }
+  Host fast(Program::builtin(), board);
+  const auto t = fast.drive({Move::line(40, -17), Move::arc(9, 2, -2, 9, Sense::CCW)}, 100.0);
   ASSERT_TRUE(t.all_done);
   EXPECT_GT(t.overruns, 0u);
   EXPECT_EQ(t.commands, t.pulses + t.overruns + t.idle_commands);
