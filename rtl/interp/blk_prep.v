@@ -1,27 +1,43 @@
 // blk_prep: turns a block as the host writes it (kind, sense, start quadrant
 // and crossings from Circular<W>::validate, magnitudes) into the register
 // values interp_dp loads: the inward/outward magnitudes, SUB/ADD, the
-// per-move comparison constants and the initial flags. Combinational; it
-// sits in front of the move queue, so none of it is on the step loop.
+// per-move comparison constants and the initial flags.
+//
+// Two pipeline stages, so that no path is longer than a multiplexer, an
+// adder or a comparator: stage 1 (the clock after i_push) selects the
+// inward/outward magnitudes and the targets; stage 2 forms SUB, ADD and
+// the constants and carries stage 1 along; the output (o_wr high for one
+// clock, two clocks after i_push) adds the flags, compared from stage 2.
+// A block may be pushed in every clock.
 //
 // Line: XE, YE are |Xe|, |Ye|; SXN, SYN their signs; XS, YS, Q, K unused.
 // Arc: |xs|, |ys|, |xe|, |ye| relative to the centre, Q = start quadrant,
 // K = quadrant crossings (0..4). The host validates the arc (the hardware
-// has no multiplier); an invalid block gives undefined pulses, never a hang
-// of the bus.
+// has no multiplier); an invalid block gives undefined pulses.
 `default_nettype none
 
 module blk_prep #(
     parameter integer W = 24  // coordinate magnitude width
 ) (
+    input  wire           i_clk,
+    input  wire           i_rst,
+    input  wire           i_push,
     input  wire           i_arc,
     input  wire           i_cw,
+    input  wire           i_sxn,
+    input  wire           i_syn,
     input  wire [1:0]     i_q,
     input  wire [2:0]     i_k,
     input  wire [W-1:0]   i_xs,
     input  wire [W-1:0]   i_ys,
     input  wire [W-1:0]   i_xe,
     input  wire [W-1:0]   i_ye,
+    output wire [1:0]     o_inflight, // pushes not yet written (0..2)
+    output wire           o_wr,       // the prepared block is valid
+    output wire           o_arc,
+    output wire           o_cw,
+    output wire           o_sxn,
+    output wire           o_syn,
     output wire [1:0]     o_q,
     output wire [2:0]     o_k,
     output wire [W-1:0]   o_ci,
@@ -32,51 +48,114 @@ module blk_prep #(
     output wire [W+1:0]   o_ti2,
     output wire [W+1:0]   o_tim1,
     output wire [W+1:0]   o_to2,
-    output wire [7:0]     o_flags   // interp_dp F_* order
+    output wire [7:0]     o_flags     // interp_dp F_* order
 );
 
-  // Inward axis in the start quadrant and in the end quadrant (the end
-  // quadrant is K crossings away, so its parity differs by K[0]).
+  // ------------------------------------------------------------- stage 1
+  // Inward axis in the start quadrant and in the end quadrant (K crossings
+  // away, so its parity differs by K[0]).
   wire in_x0 = ~i_q[0] ^ i_cw;
   wire in_xe = in_x0 ^ i_k[0];
 
-  wire [W-1:0] cin0 = in_x0 ? i_xs : i_ys;
-  wire [W-1:0] cout0 = in_x0 ? i_ys : i_xs;
-  wire [W-1:0] e_in = in_xe ? i_xe : i_ye;
-  wire [W-1:0] e_out = in_xe ? i_ye : i_xe;
+  reg v1_q;
+  reg arc1_q, cw1_q, sxn1_q, syn1_q;
+  reg [1:0] q1_q;
+  reg [2:0] k1_q;
+  reg [W-1:0] ci1_q, co1_q;   // start magnitudes (line: 0, 0)
+  reg [W-1:0] ti1s_q, to1s_q; // targets (line: A, B; arc: end magnitudes)
 
-  // Line: inward = X, target A = |Xe| reached counting up from 0.
-  // Arc: target |c_in,end| reached counting down from |c_in,start|.
-  wire [W+1:0] ti = {2'b00, i_arc ? e_in : i_xe};
-  wire [W+1:0] to = {2'b00, i_arc ? e_out : i_ye};
-  wire [W-1:0] ci0 = i_arc ? cin0 : {W{1'b0}};
-  wire [W-1:0] co0 = i_arc ? cout0 : {W{1'b0}};
-  wire [W-1:0] cin0_m1 = cin0 - 1'b1;
+  always @(posedge i_clk) begin
+    if (i_rst) v1_q <= 1'b0;
+    else v1_q <= i_push;
+  end
+
+  always @(posedge i_clk) begin
+    if (i_push) begin
+      arc1_q <= i_arc;
+      cw1_q <= i_cw;
+      sxn1_q <= i_sxn & ~i_arc;
+      syn1_q <= i_syn & ~i_arc;
+      q1_q <= i_arc ? i_q : 2'd0;
+      k1_q <= i_arc ? i_k : 3'd0;
+      ci1_q <= i_arc ? (in_x0 ? i_xs : i_ys) : {W{1'b0}};
+      co1_q <= i_arc ? (in_x0 ? i_ys : i_xs) : {W{1'b0}};
+      ti1s_q <= i_arc ? (in_xe ? i_xe : i_ye) : i_xe;
+      to1s_q <= i_arc ? (in_xe ? i_ye : i_xe) : i_ye;
+    end
+  end
+
+  // ------------------------------------------------------------- stage 2
+  wire [W+1:0] ti = {2'b00, ti1s_q};
+  wire [W+1:0] to = {2'b00, to1s_q};
   wire [W+1:0] two = {{W{1'b0}}, 2'b10};
+  // Line: ci counts up to ti; arc: down to it.
+  wire [W+1:0] d1 = arc1_q ? {{(W+1){1'b0}}, 1'b1} : {(W+2){1'b1}};
+  wire [W+1:0] d2 = arc1_q ? two : {{(W+1){1'b1}}, 1'b0};
 
-  assign o_q = i_arc ? i_q : 2'd0;
-  assign o_k = i_arc ? i_k : 3'd0;
-  assign o_ci = ci0;
-  assign o_co = co0;
-  assign o_sub = i_arc ? {cin0_m1, 1'b1} : {1'b0, i_ye};
-  assign o_add = i_arc ? {cout0, 1'b1} : {1'b0, i_xe};
-  // ti + 1 / ti + 2 (arc: ci counts down to ti), ti - 1 / ti - 2 (line).
-  wire [W+1:0] d1 = i_arc ? {{(W+1){1'b0}}, 1'b1} : {(W+2){1'b1}};
-  wire [W+1:0] d2 = i_arc ? two : {{(W+1){1'b1}}, 1'b0};
-  assign o_ti1 = ti + d1;
-  assign o_ti2 = ti + d2;
-  assign o_tim1 = ti - 1'b1;
-  assign o_to2 = to - two;
+  reg v2_q;
+  reg [W:0] sub2_q, add2_q;
+  reg [W+1:0] ti1_q, ti2_q, tim1_q, to1_q, to2_q;
+  reg [W-1:0] cim1_q;         // ci - 1
+  reg arc2_q, cw2_q, sxn2_q, syn2_q;
+  reg [1:0] q2_q;
+  reg [2:0] k2_q;
+  reg [W-1:0] ci2_q, co2_q, ti2s_q, to2s_q;
 
-  wire [W+1:0] ci0_x = {2'b00, ci0};
-  wire [W+1:0] co0_x = {2'b00, co0};
-  assign o_flags[0] = (ci0_x == ti);               // F_IN_EX
-  assign o_flags[1] = (co0_x == to);               // F_OUT_EX
-  assign o_flags[2] = (ci0_x == o_ti1);            // F_IN_ONE
-  assign o_flags[3] = (co0_x + 1'b1 == to);        // F_OUT_ONE
-  assign o_flags[4] = i_arc & (ci0 == 1);          // F_CI_ONE
-  assign o_flags[5] = (co0_x == ti);               // F_CO_TI
-  assign o_flags[6] = (to == 0);                   // F_TO_Z
-  assign o_flags[7] = (to == 1);                   // F_TO_ONE
+  always @(posedge i_clk) begin
+    if (i_rst) v2_q <= 1'b0;
+    else v2_q <= v1_q;
+  end
+
+  always @(posedge i_clk) begin
+    if (v1_q) begin
+      cim1_q <= ci1_q - 1'b1;
+      sub2_q <= arc1_q ? {ci1_q - 1'b1, 1'b1} : {1'b0, to1s_q};
+      add2_q <= arc1_q ? {co1_q, 1'b1} : {1'b0, ti1s_q};
+      ti1_q <= ti + d1;
+      ti2_q <= ti + d2;
+      tim1_q <= ti - 1'b1;
+      to1_q <= to - 1'b1;
+      to2_q <= to - two;
+      arc2_q <= arc1_q;
+      cw2_q <= cw1_q;
+      sxn2_q <= sxn1_q;
+      syn2_q <= syn1_q;
+      q2_q <= q1_q;
+      k2_q <= k1_q;
+      ci2_q <= ci1_q;
+      co2_q <= co1_q;
+      ti2s_q <= ti1s_q;
+      to2s_q <= to1s_q;
+    end
+  end
+
+  // -------------------------------------------------------------- output
+  assign o_inflight = {1'b0, v1_q} + {1'b0, v2_q};
+  assign o_wr = v2_q;
+  assign o_arc = arc2_q;
+  assign o_cw = cw2_q;
+  assign o_sxn = sxn2_q;
+  assign o_syn = syn2_q;
+  assign o_q = q2_q;
+  assign o_k = k2_q;
+  assign o_ci = ci2_q;
+  assign o_co = co2_q;
+  assign o_sub = sub2_q;
+  assign o_add = add2_q;
+  assign o_ti1 = ti1_q;
+  assign o_ti2 = ti2_q;
+  assign o_tim1 = tim1_q;
+  assign o_to2 = to2_q;
+
+  // ci == ti1: arc, ci - 1 == ti; line, 0 == A - 1.
+  wire in_one = arc2_q ? (cim1_q == ti2s_q) : (ti2s_q == 1);
+  assign o_flags[0] = (ci2_q == ti2s_q);                // F_IN_EX
+  assign o_flags[1] = (co2_q == to2s_q);                // F_OUT_EX
+  assign o_flags[2] = in_one;                           // F_IN_ONE
+  assign o_flags[3] = ({2'b00, co2_q} == to1_q);        // F_OUT_ONE
+  assign o_flags[4] = arc2_q & (ci2_q == 1);            // F_CI_ONE
+  assign o_flags[5] = (co2_q == ti2s_q);                // F_CO_TI
+  assign o_flags[6] = (to2s_q == 0);                    // F_TO_Z
+  assign o_flags[7] = (to2s_q == 1);                    // F_TO_ONE
 
 endmodule

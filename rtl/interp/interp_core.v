@@ -5,7 +5,9 @@
 // One interpolation step per clock while i_cmd is high; consecutive queued
 // blocks run back to back (the next block is loaded in the clock of the
 // previous block's last pulse). i_abort drops the queue and the running
-// move, like a reset of the interpolator alone.
+// move, like a reset of the interpolator alone. A block pushed while
+// o_full is refused (nothing happens); a pushed block is in the queue
+// (o_level) at once and can be loaded three clocks later.
 `default_nettype none
 
 module interp_core #(
@@ -47,7 +49,10 @@ module interp_core #(
 );
 
   localparam integer BW = 8 * W + 27;  // prepared block width
+  localparam [QAW+1:0] DEPTH = {2'b01, {QAW{1'b0}}};  // memory depth
 
+  wire p_wr, p_arc, p_cw, p_sxn, p_syn;
+  wire [1:0] p_inflight;
   wire [1:0] p_q;
   wire [2:0] p_k;
   wire [W-1:0] p_ci, p_co;
@@ -56,23 +61,33 @@ module interp_core #(
   wire [7:0] p_flags;
 
   blk_prep #(.W(W)) u_prep (
-      .i_arc(i_arc), .i_cw(i_cw), .i_q(i_q), .i_k(i_k),
+      .i_clk(i_clk), .i_rst(i_rst | i_abort), .i_push(i_push & ~o_full),
+      .i_arc(i_arc), .i_cw(i_cw), .i_sxn(i_sxn), .i_syn(i_syn), .i_q(i_q), .i_k(i_k),
       .i_xs(i_xs), .i_ys(i_ys), .i_xe(i_xe), .i_ye(i_ye),
+      .o_inflight(p_inflight), .o_wr(p_wr),
+      .o_arc(p_arc), .o_cw(p_cw), .o_sxn(p_sxn), .o_syn(p_syn),
       .o_q(p_q), .o_k(p_k), .o_ci(p_ci), .o_co(p_co), .o_sub(p_sub), .o_add(p_add),
       .o_ti1(p_ti1), .o_ti2(p_ti2), .o_tim1(p_tim1), .o_to2(p_to2), .o_flags(p_flags)
   );
 
-  wire [BW-1:0] wdata = {i_arc, i_cw, i_sxn & ~i_arc, i_syn & ~i_arc, p_q, p_k, p_ci, p_co,
+  wire [BW-1:0] wdata = {p_arc, p_cw, p_sxn, p_syn, p_q, p_k, p_ci, p_co,
                          p_sub, p_add, p_ti1, p_ti2, p_tim1, p_to2, p_flags};
 
-  wire head_valid, pop;
+  wire head_valid, pop, unused_mem_full;  // full is decided below, with blocks in flight
   wire [BW-1:0] head;
+  wire [QAW+1:0] fifo_level;
+  wire [QAW:0] mem_used;
 
   move_fifo #(.WIDTH(BW), .AW(QAW)) u_fifo (
       .i_clk(i_clk), .i_rst(i_rst), .i_flush(i_abort),
-      .i_push(i_push), .i_data(wdata), .o_full(o_full),
-      .i_pop(pop), .o_valid(head_valid), .o_data(head), .o_level(o_level)
+      .i_push(p_wr), .i_data(wdata), .o_full(unused_mem_full),
+      .i_pop(pop), .o_valid(head_valid), .o_data(head), .o_level(fifo_level), .o_used(mem_used)
   );
+
+  // Full counts the blocks still in preparation; so does the level.
+  wire [QAW+1:0] committed = {1'b0, mem_used} + {{QAW{1'b0}}, p_inflight};
+  assign o_full = (committed >= DEPTH);
+  assign o_level = fifo_level + {{QAW{1'b0}}, p_inflight};
 
   wire h_arc, h_cw, h_sxn, h_syn;
   wire [1:0] h_q;

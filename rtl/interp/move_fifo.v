@@ -18,7 +18,8 @@ module move_fifo #(
     input  wire             i_pop,
     output reg              o_valid,
     output reg  [WIDTH-1:0] o_data,
-    output wire [AW+1:0]    o_level     // blocks queued, head included
+    output wire [AW+1:0]    o_level,    // blocks queued, head included
+    output wire [AW:0]      o_used      // blocks in the memory (head excluded)
 );
 
   localparam integer DEPTH = 1 << AW;
@@ -29,6 +30,7 @@ module move_fifo #(
   wire [AW:0] used = wptr_q - rptr_q;
   wire mem_empty = (used == 0);
   assign o_full = used[AW];
+  assign o_used = used;
   assign o_level = {1'b0, used} + {{(AW+1){1'b0}}, o_valid};
 
   wire wr = i_push & ~o_full;

@@ -8,11 +8,11 @@
 #   run_formal.sh KIND [W] [DEPTH]
 #     KIND  lines | arcs
 #     W     coordinate width (default 3)
-#     DEPTH clocks from reset (default: lines 2^(W+1) + 6, arcs 64)
+#     DEPTH clocks from reset (default: lines 2^(W+1) + 6, arcs 66)
 #
 # A move has at most 2 (2^W - 1) pulses (line) or 56 at W = 3 (arc,
-# counted with the model), its first step comes 4 clocks after reset and
-# nothing changes once it is done; so a depth above pulses + 5 covers every
+# counted with the model), its first step comes 6 clocks after reset and
+# nothing changes once it is done; so a depth above pulses + 7 covers every
 # reachable state of every move at that width: a complete proof for the
 # single-move harness, not for W = 24, arbitrary command gating or
 # back-to-back moves (those are simulated).
@@ -21,7 +21,7 @@ kind=${1:?lines or arcs}
 w=${2:-3}
 case "$kind" in
   lines) def=-DLINE_ONLY; depth=${3:-$(( (1 << (w + 1)) + 6 ))} ;;
-  arcs) def=-DARC_ONLY; depth=${3:-64} ;;
+  arcs) def=-DARC_ONLY; depth=${3:-66} ;;
   *) echo "run_formal.sh: KIND must be lines or arcs, not '$kind'" >&2; exit 2 ;;
 esac
 here=$(cd "$(dirname "$0")" && pwd)
