@@ -305,6 +305,7 @@ module interp_dp #(
   wire signed [2*W+5:0] sub_s = $signed({{(W+5){1'b0}}, sub_q});
   wire signed [2*W+5:0] add_s = $signed({{(W+5){1'b0}}, add_q});
   wire signed [2*W+5:0] r2_s = $signed({2'b00, r2_f});
+  wire signed [2*W+5:0] MAXM_S = $signed({{(W+6){1'b0}}, {W{1'b1}}});  // 2^W - 1
 
   // `loaded_f`: a block has been loaded since reset (before, the
   // registers other than the flags hold no move).
@@ -329,13 +330,13 @@ module interp_dp #(
       assert(kz_q == (k_q == 3'd0));
       assert(k1z_q == (k_q == 3'd1 && arc_q && to_f == 0));
       if (!arc_q) begin
-        // Line: D = A*y - B*x, within [-B, A] (D < A unless A = 0), and
+        // Line: D = A*y - B*x, within [-B, A - 1] (or 0 when A = 0), and
         // the distance travelled never passes the end point.
         assert(k_q == 3'd0);
 `ifndef FORMAL_NO_MUL
         assert(d_s == add_s * co_s - sub_s * ci_s);
 `endif
-        assert(d_s >= -sub_s && d_s <= add_s);
+        assert(d_s >= -sub_s && (d_s < add_s || d_q == 0));
         assert({2'b00, ci_q} <= ti_f && {2'b00, co_q} <= to_f);
         assert(ti_f == {1'b0, add_q} && to_f == {1'b0, sub_q});
         // Done within the pulse count: every pulse is one unit of A + B.
@@ -346,6 +347,8 @@ module interp_dp #(
         assert(co_ti_q == ({2'b00, co_q} == ti_f));
         assert(sub_q == {ci_q, 1'b0} - 1'b1);
         assert(add_q == {co_q, 1'b1});
+        // |D| <= 2 (2^W - 1) (docs/algorithm.md, "Bounds"): W + 2 bits.
+        assert(d_s <= 2 * MAXM_S && d_s >= -2 * MAXM_S);
 `ifndef FORMAL_NO_MUL
         assert(d_s == ci_s * ci_s + co_s * co_s - r2_s);
 `endif

@@ -8,7 +8,7 @@
 #   run_formal.sh KIND [W] [DEPTH]
 #     KIND  lines | arcs
 #     W     coordinate width (default 3)
-#     DEPTH clocks from reset (default: lines 2^(W+1) + 6, arcs 66)
+#     DEPTH clocks from reset (default: lines 2^(W+1) + 8, arcs 66)
 #
 # A move has at most 2 (2^W - 1) pulses (line) or 56 at W = 3 (arc,
 # counted with the model), its first step comes 6 clocks after reset and
@@ -20,7 +20,7 @@ set -euo pipefail
 kind=${1:?lines or arcs}
 w=${2:-3}
 case "$kind" in
-  lines) def=-DLINE_ONLY; depth=${3:-$(( (1 << (w + 1)) + 6 ))} ;;
+  lines) def=-DLINE_ONLY; depth=${3:-$(( (1 << (w + 1)) + 8 ))} ;;
   arcs) def=-DARC_ONLY; depth=${3:-66} ;;
   *) echo "run_formal.sh: KIND must be lines or arcs, not '$kind'" >&2; exit 2 ;;
 esac
