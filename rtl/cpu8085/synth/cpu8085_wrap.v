@@ -9,16 +9,15 @@
 // (the other debug outputs are for simulation and are left open, so their
 // registers are trimmed). With DESIGN_BOARD: the whole board8085, ROM
 // initialised from ROM_FILE.
-module cpu8085_wrap #(
-    // board only: ROM image, relative to where yosys runs (rtl/synth)
-    parameter ROM_FILE = "../board8085/synth/board_test.memh"
-) (
+module cpu8085_wrap (
     input  wire i_clk,
     input  wire i_ser,   // serial input
     input  wire i_load,  // load the output shift register
     output wire o_ser    // serial output
 );
 `ifdef DESIGN_BOARD
+  // ROM image, relative to where yosys runs (rtl/synth)
+  localparam ROM_FILE = "../board8085/synth/board_test.memh";
   localparam integer NI = 31;  // reset on top
   localparam integer NO = 32;
 `else
@@ -40,6 +39,9 @@ module cpu8085_wrap #(
 
   wire rst = in_q[NI-1];
 
+  // The debug outputs are left open on purpose: synthesis trims what only
+  // they use.
+  /* verilator lint_off PINCONNECTEMPTY */
 `ifdef DESIGN_BOARD
   board8085 #(
       .ROM_FILE(ROM_FILE)
@@ -70,6 +72,7 @@ module cpu8085_wrap #(
       .i_dbg_load(1'b0), .i_dbg_pc(16'h0000), .i_dbg_sp(16'h0000), .i_dbg_regs(64'h0)
   );
 `endif
+  /* verilator lint_on PINCONNECTEMPTY */
 endmodule
 
 `default_nettype wire
