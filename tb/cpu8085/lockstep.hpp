@@ -83,6 +83,8 @@ class Lockstep {
   const std::vector<Access>& last_writes() const { return iss_bus_.log; }
   const std::string& report() const { return report_; }
   std::uint8_t mem(std::uint16_t a) const { return iss_bus_.mem[a]; }
+  // Changes one byte on one side only: for testing the divergence report.
+  void poke_rtl_side(std::uint16_t a, std::uint8_t v) { rtl_bus_.mem[a] = v; }
 
  private:
   LogBus iss_bus_, rtl_bus_;

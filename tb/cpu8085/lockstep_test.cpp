@@ -27,6 +27,28 @@ std::uint64_t scale() {
   return v > 0 ? static_cast<std::uint64_t>(v) : 1;
 }
 
+// The harness itself: a byte that differs on the RTL side must stop the run
+// at the step that reads it, naming what differs, with both trace lines.
+TEST(Lockstep, ReportsTheFirstDivergenceWithBothTraceLines) {
+  std::array<std::uint8_t, 65536> mem{};
+  const std::uint8_t prog[] = {0x3E, 0x01,         // MVI A,01
+                               0x3A, 0x00, 0x10,   // LDA 1000
+                               0x00};              // NOP
+  std::copy(std::begin(prog), std::end(prog), mem.begin());
+  mem[0x1000] = 0x05;
+  Lockstep ls(mem);
+  ls.poke_rtl_side(0x1000, 0x06);
+  ASSERT_TRUE(ls.step());
+  ASSERT_FALSE(ls.step());
+  const std::string& r = ls.report();
+  EXPECT_NE(r.find("divergence at step 2: A differs"), std::string::npos) << r;
+  EXPECT_NE(r.find("ISS: T=         7 PC=0002 OP=3A LDA 1000"), std::string::npos) << r;
+  EXPECT_NE(r.find("A=05"), std::string::npos) << r;
+  EXPECT_NE(r.find("RTL: T=         7 PC=0002 OP=3A LDA 1000"), std::string::npos) << r;
+  EXPECT_NE(r.find("A=06"), std::string::npos) << r;
+  EXPECT_NE(r.find("MVI A,01"), std::string::npos) << "context line missing:\n" << r;
+}
+
 // Every opcode (HLT included) from many random register and memory states:
 // one step each, compared. Flags are random over the bits the 8085 keeps.
 TEST(Lockstep, EveryOpcodeFromRandomStates) {
