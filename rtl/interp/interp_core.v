@@ -51,6 +51,8 @@ module interp_core #(
   localparam integer BW = 8 * W + 27;  // prepared block width
   localparam [QAW+1:0] DEPTH = {2'b01, {QAW{1'b0}}};  // memory depth
 
+  reg full_q;
+  wire push_ok = i_push & ~o_full;
   wire p_wr, p_arc, p_cw, p_sxn, p_syn;
   wire [1:0] p_inflight;
   wire [1:0] p_q;
@@ -61,7 +63,7 @@ module interp_core #(
   wire [7:0] p_flags;
 
   blk_prep #(.W(W)) u_prep (
-      .i_clk(i_clk), .i_rst(i_rst | i_abort), .i_push(i_push & ~o_full),
+      .i_clk(i_clk), .i_rst(i_rst | i_abort), .i_push(push_ok),
       .i_arc(i_arc), .i_cw(i_cw), .i_sxn(i_sxn), .i_syn(i_syn), .i_q(i_q), .i_k(i_k),
       .i_xs(i_xs), .i_ys(i_ys), .i_xe(i_xe), .i_ye(i_ye),
       .o_inflight(p_inflight), .o_wr(p_wr),
@@ -84,9 +86,15 @@ module interp_core #(
       .i_pop(pop), .o_valid(head_valid), .o_data(head), .o_level(fifo_level), .o_used(mem_used)
   );
 
-  // Full counts the blocks still in preparation; so does the level.
+  // Full counts the blocks still in preparation; so does the level. It is
+  // a register: the blocks committed to the memory after this clock, not
+  // counting the one the datapath may take (never too optimistic).
   wire [QAW+1:0] committed = {1'b0, mem_used} + {{QAW{1'b0}}, p_inflight};
-  assign o_full = (committed >= DEPTH);
+  always @(posedge i_clk) begin
+    if (i_rst | i_abort) full_q <= 1'b0;
+    else full_q <= (committed + {{(QAW+1){1'b0}}, push_ok} >= DEPTH);
+  end
+  assign o_full = full_q;
   assign o_level = fifo_level + {{QAW{1'b0}}, p_inflight};
 
   wire h_arc, h_cw, h_sxn, h_syn;
