@@ -24,7 +24,12 @@ Program Program::load(const std::string& hex_path, const std::string& lst_path) 
     const std::string name = line.substr(0, colon);
     if (name.find(' ') != std::string::npos) continue;
     const std::string hex = line.substr(def - 4, 4);
-    p.symbols[name] = static_cast<std::uint16_t>(std::stoul(hex, nullptr, 16));
+    // asm80 prints a negative value as the hex of its magnitude after a
+    // minus, padded to 4 characters ("00-1" is -1): keep 16-bit two's complement.
+    const auto minus = hex.find('-');
+    const long v = minus == std::string::npos ? static_cast<long>(std::stoul(hex, nullptr, 16))
+                                              : -static_cast<long>(std::stoul(hex.substr(minus + 1), nullptr, 16));
+    p.symbols[name] = static_cast<std::uint16_t>(v);
   }
   if (p.symbols.empty()) throw std::runtime_error(lst_path + ": no symbol table in the listing");
   return p;

@@ -48,10 +48,10 @@ namespace {
 
 bool full_run() { return std::getenv("SW8085_FULL") != nullptr; }
 
-// Every line with |XE|, |YE| <= N (N = 12, 40 with SW8085_FULL=1).
+// Every line with |XE|, |YE| <= N (N = 16, 40 with SW8085_FULL=1).
 TEST(Program, AllSmallLines) {
   Host h;
-  const int n = full_run() ? 40 : 12;
+  const int n = full_run() ? 40 : 16;
   for (int xe = -n; xe <= n; ++xe)
     for (int ye = -n; ye <= n; ++ye) {
       const Move m = Move::line(xe, ye);
@@ -64,11 +64,11 @@ TEST(Program, AllSmallLines) {
 }
 
 // Every accepted arc between points with |coordinates| <= N, both senses
-// (N = 5, 9 with SW8085_FULL=1): quadrant crossings, full circles, the end
+// (N = 6, 9 with SW8085_FULL=1): quadrant crossings, full circles, the end
 // rule in every quadrant.
 TEST(Program, AllSmallArcs) {
   Host h;
-  const int n = full_run() ? 9 : 5;
+  const int n = full_run() ? 9 : 6;
   int runs = 0;
   for (int xs = -n; xs <= n; ++xs)
     for (int ys = -n; ys <= n; ++ys)

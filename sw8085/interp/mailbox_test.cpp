@@ -1,0 +1,124 @@
+// mailbox.hpp against the program: every offset and constant equals the
+// EQU of interp.a80 (read from the assembler's listing), and the encodings
+// round-trip.
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "sw8085/interp/host.hpp"
+#include "sw8085/interp/mailbox.hpp"
+
+namespace contour::sw8085 {
+namespace {
+
+int sym(const std::string& name) {
+  // asm80 lists a negative EQU as its 16-bit two's complement.
+  return static_cast<std::int16_t>(Program::builtin().symbol(name));
+}
+
+TEST(Mailbox, OffsetsAreTheProgramsEqus) {
+  EXPECT_EQ(sym("MB_IDLE"), kIdleMode);
+  EXPECT_EQ(sym("MB_NEXT"), kNext);
+  EXPECT_EQ(sym("MB_ACTIVE"), kActive);
+  EXPECT_EQ(sym("MB_OVR"), kOverruns);
+  EXPECT_EQ(sym("MB_READY"), kReady);
+  EXPECT_EQ(sym("MB_IDLECNT"), kIdleCount);
+  EXPECT_EQ(sym("MB_LAYOUT"), kLayout);
+  EXPECT_EQ(sym("READY_MAGIC"), kReadyMagic);
+  EXPECT_EQ(sym("LAYOUT_VERSION"), kLayoutVersion);
+  EXPECT_EQ(sym("SLOT0"), kSlots[0]);
+  EXPECT_EQ(sym("SLOT1"), kSlots[1]);
+  EXPECT_EQ(sym("S_MODE"), kMode);
+  EXPECT_EQ(sym("S_STATUS"), kStatus);
+  EXPECT_EQ(sym("ST_QUEUED"), kQueued);
+  EXPECT_EQ(sym("ST_STARTED"), kStarted);
+  EXPECT_EQ(sym("PSTEP"), kPortStep);
+  EXPECT_EQ(sym("PEDGES"), kPortEdges);
+  EXPECT_EQ(sym("PDONE"), kPortDone);
+  EXPECT_EQ(sym("L_D0"), line::kD);
+  EXPECT_EQ(sym("L_RX0"), line::kRx[0]);
+  EXPECT_EQ(sym("L_RX1"), line::kRx[1]);
+  EXPECT_EQ(sym("L_RX2"), line::kRx[2]);
+  EXPECT_EQ(sym("L_RY0"), line::kRy[0]);
+  EXPECT_EQ(sym("L_RY1"), line::kRy[1]);
+  EXPECT_EQ(sym("L_RY2"), line::kRy[2]);
+  EXPECT_EQ(sym("L_PATX"), line::kPatX);
+  EXPECT_EQ(sym("L_PATY"), line::kPatY);
+  EXPECT_EQ(sym("L_AXES"), line::kAxes);
+  EXPECT_EQ(sym("L_NB"), line::kNotB);
+  EXPECT_EQ(sym("L_A"), line::kA);
+  EXPECT_EQ(sym("A_D0"), arc::kD);
+  EXPECT_EQ(sym("A_CX"), arc::kCx);
+  EXPECT_EQ(sym("A_EX"), arc::kEx);
+  EXPECT_EQ(sym("A_CY"), arc::kCy);
+  EXPECT_EQ(sym("A_EY"), arc::kEy);
+  EXPECT_EQ(sym("A_Q"), arc::kQ);
+  EXPECT_EQ(sym("A_K"), arc::kK);
+  EXPECT_EQ(sym("A_QSTEP"), arc::kQstep);
+  EXPECT_EQ(sym("A_PATT"), arc::kPatterns);
+  EXPECT_EQ(sym("A_PIN"), arc::kPin);
+  EXPECT_EQ(sym("A_POUT"), arc::kPout);
+}
+
+// asm80 lets a later definition replace an earlier one whose name differs
+// only in case (labels are case-insensitive): that must never happen.
+TEST(Mailbox, NoSymbolIsDefinedTwice) {
+  std::ifstream src(std::string(SW8085_SOURCE_DIR) + "/interp.a80");
+  ASSERT_TRUE(src.good());
+  std::set<std::string> seen;
+  std::string line;
+  int n = 0;
+  while (std::getline(src, line)) {
+    ++n;
+    if (line.empty() || line[0] == ';' || std::isspace(static_cast<unsigned char>(line[0]))) continue;
+    std::string name;
+    for (char c : line) {
+      if (c == ':' || std::isspace(static_cast<unsigned char>(c))) break;
+      name += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    }
+    EXPECT_TRUE(seen.insert(name).second) << "interp.a80:" << n << ": " << name << " is defined again";
+  }
+  EXPECT_GT(seen.size(), 100u);
+}
+
+TEST(Mailbox, CodesAreDistinctAndDispatchable) {
+  const Codes c = Codes::from_symbols(Program::builtin().symbols);
+  std::set<std::uint8_t> all = {c.idle, c.lyo};
+  for (const auto& [code, info] : c.arc) {
+    EXPECT_TRUE(all.insert(code).second) << "code " << int(code) << " twice";
+    EXPECT_GE(code, 1);
+    EXPECT_LT(code, 0x80);  // 01h..7Fh: the dispatch's JP
+  }
+  EXPECT_EQ(all.size(), 2u + 2 * 18);
+}
+
+// Distance counters across their byte boundaries: a line (v, 1) queued and
+// decoded at once has x = 0, i.e. the distance left decodes back to v.
+TEST(Mailbox, DistanceCountersRoundTrip) {
+  const Codes c = Codes::from_symbols(Program::builtin().symbols);
+  std::array<std::uint8_t, 256> mb{};
+  const std::int64_t max = (std::int64_t{1} << 24) - 1;
+  for (std::int64_t v : {std::int64_t{1}, std::int64_t{2}, std::int64_t{255}, std::int64_t{256}, std::int64_t{257},
+                         std::int64_t{65535}, std::int64_t{65536}, std::int64_t{65537}, std::int64_t{16711680},
+                         std::int64_t{16711681}, max - 1, max}) {
+    const SlotMove sm = encode(Move::line(v, -v), kSlots[1], c, mb);
+    const State s = decode(sm, mb, c, 0);
+    EXPECT_EQ(s.x, 0) << v;
+    EXPECT_EQ(s.y, 0) << v;
+    EXPECT_EQ(s.d, 0) << v;
+    EXPECT_FALSE(s.done) << v;
+  }
+}
+
+TEST(Mailbox, PatternsDecode) {
+  EXPECT_EQ(decode_pattern(pattern(Axis::X, -1)), (Pulse{Axis::X, -1}));
+  EXPECT_EQ(decode_pattern(pattern(Axis::Y, +1)), (Pulse{Axis::Y, +1}));
+  EXPECT_FALSE(decode_pattern(0x05).has_value());  // two step bits
+  EXPECT_FALSE(decode_pattern(0x02).has_value());  // no step bit
+}
+
+}  // namespace
+}  // namespace contour::sw8085
