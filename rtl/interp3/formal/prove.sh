@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Formal proof of interp3_core (its `ifdef FORMAL properties) by temporal
+# induction with yosys's SAT solver (`sat -tempinduct`, 1-induction: the
+# properties hold in the clock after reset and every state satisfying them
+# steps to one that does, for every input: any move, any command sequence,
+# loads and resets at any time).
+#
+#   prove.sh OUTDIR [W...]     default widths: 2 3
+#
+# Then the proof is checked to be able to fail: each mutant of the core
+# (one deliberate bug, below) must be refuted at W = 2 by a counterexample
+# from reset (yosys: "model found for base case").
+#
+# W = 4 is out of reach here (the induction step needs the solver to
+# multiply out the discriminant identities; > 10 min). The exhaustive
+# simulation at W = 4 (tb/interp3) covers every reachable state there.
+set -euo pipefail
+out=${1:?output directory}
+shift
+widths=${*:-2 3}
+here=$(cd "$(dirname "$0")" && pwd)
+core="$here/../interp3_core.v"
+mkdir -p "$out"
+
+prove() {  # prove FILE W LOG -> status of yosys
+  yosys -q -l "$3" -p "
+    read_verilog -formal $1
+    chparam -set W $2 interp3_core
+    prep -top interp3_core
+    async2sync
+    dffunmap
+    sat -tempinduct -prove-asserts -set-assumes -seq 1 -maxsteps 4" > /dev/null 2>&1
+}
+
+fails=0
+for w in $widths; do
+  t0=$(date +%s)
+  if prove "$core" "$w" "$out/prove_w$w.log" && grep -q "Induction step proven: SUCCESS" "$out/prove_w$w.log"; then
+    echo "interp3_formal: W = $w proved by 1-induction ($(( $(date +%s) - t0 )) s)"
+  else
+    echo "interp3_formal: W = $w FAILED (see $out/prove_w$w.log)"
+    fails=$((fails + 1))
+  fi
+done
+
+# Mutants: "description|sed expression". Each must make the proof fail.
+mutants=(
+  "load Exy = B - A instead of A - B|s/exy_q <= ld_xe - ld_ye;/exy_q <= ld_ye - ld_xe;/"
+  "X step leaves Exz unchanged|s/exz_d = exz_q - c2;/exz_d = exz_q;/"
+  "distance-left flag of X cleared one step late|s/rx_d = x_inc != a_q;/rx_d = x_q != a_q;/"
+  "selection ignores the sign of Eyz|s/(~rz_q | eyz_ge)/(1'b1)/"
+)
+n=0
+for m in "${mutants[@]}"; do
+  n=$((n + 1))
+  desc=${m%%|*}
+  expr=${m#*|}
+  sed "$expr" "$core" > "$out/mutant$n.v"
+  if cmp -s "$core" "$out/mutant$n.v"; then
+    echo "interp3_formal: mutant $n ($desc) did not apply to the source"
+    fails=$((fails + 1))
+  elif prove "$out/mutant$n.v" 2 "$out/mutant$n.log" && grep -q "model found for base case: FAIL" "$out/mutant$n.log"; then
+    echo "interp3_formal: mutant $n ($desc) refuted from reset"
+  else
+    echo "interp3_formal: mutant $n ($desc) was NOT refuted (see $out/mutant$n.log)"
+    fails=$((fails + 1))
+  fi
+done
+exit $((fails > 0))

@@ -1,0 +1,163 @@
+# gcode_engines.cmake (cmake -P): the two-stage step stream of
+# `contour gcode FILE --pulses` must be byte for byte the same with
+# `--engine rtl` (each cycle's chord on the Verilated interp3_core) as with
+# `--engine model` (Linear3<24>): paper B's programs, the G-code corpus's
+# 3D and helix programs, and a pseudo-random program (seeded, so every run
+# checks the same); and a chord too long for 24 bits must be refused by
+# both with the same message.
+#   -DCONTOUR=path/to/contour -DSRC=source dir -DWORK=scratch dir
+cmake_minimum_required(VERSION 3.25)
+foreach(v CONTOUR SRC WORK)
+  if(NOT ${v})
+    message(FATAL_ERROR "gcode_engines: -D${v}=... is required")
+  endif()
+endforeach()
+file(MAKE_DIRECTORY ${WORK})
+
+# fixed(OUT N DIGITS): the integer N / 10^DIGITS as a decimal ("-1.25").
+function(fixed out n digits)
+  set(sign "")
+  if(n LESS 0)
+    set(sign "-")
+    math(EXPR n "-(${n})")
+  endif()
+  math(EXPR scale "1")
+  foreach(d RANGE 1 ${digits})
+    math(EXPR scale "${scale} * 10")
+  endforeach()
+  math(EXPR ip "${n} / ${scale}")
+  math(EXPR fp "${n} % ${scale} + ${scale}")
+  string(SUBSTRING "${fp}" 1 ${digits} fp)
+  set(${out} "${sign}${ip}.${fp}" PARENT_SCOPE)
+endfunction()
+
+# A random program: lines in 3D, half-circle arcs in XY (end = start + 2 (I, J),
+# so start and end radii are equal), helices (the same with a Z move).
+string(RANDOM LENGTH 4 ALPHABET 0123456789 RANDOM_SEED 1982 unused)
+set(prog "G21 G90 G17\nG0 X0 Y0 Z0\n")
+set(x 0)
+set(y 0)
+set(z 0)
+set(i 0)
+while(i LESS 24)
+  string(RANDOM LENGTH 3 ALPHABET 0123456789 r1)
+  string(RANDOM LENGTH 3 ALPHABET 0123456789 r2)
+  string(RANDOM LENGTH 3 ALPHABET 0123456789 r3)
+  string(RANDOM LENGTH 1 ALPHABET 0123 kind)
+  string(RANDOM LENGTH 2 ALPHABET 0123456789 f)
+  # Offsets -49..+49 in 0.1 mm (no leading zeros for math()).
+  math(EXPR a "(1${r1} % 99) - 49")
+  math(EXPR b "(1${r2} % 99) - 49")
+  math(EXPR c "(1${r3} % 41) - 20")
+  math(EXPR feed "(1${f} % 60) * 100 + 300")
+  if(a EQUAL 0 AND b EQUAL 0)
+    set(a 7)
+  endif()
+  if(kind STREQUAL "0" OR kind STREQUAL "1")
+    math(EXPR x "${x} + ${a}")
+    math(EXPR y "${y} + ${b}")
+    math(EXPR z "${z} + ${c}")
+    set(word "G1")
+    set(arc "")
+  else()
+    # I, J = (a, b) / 2 in 0.1 mm units (0.05 mm steps); end opposite.
+    math(EXPR x "${x} + ${a}")
+    math(EXPR y "${y} + ${b}")
+    if(kind STREQUAL "2")
+      set(word "G2")
+    else()
+      set(word "G3")
+      math(EXPR z "${z} + ${c}")
+    endif()
+    math(EXPR ia "${a} * 5")
+    math(EXPR jb "${b} * 5")
+    fixed(i_mm ${ia} 2)
+    fixed(j_mm ${jb} 2)
+    set(arc " I${i_mm} J${j_mm}")
+  endif()
+  # Coordinates in 0.1 mm: print as decimal mm.
+  fixed(x_mm ${x} 1)
+  fixed(y_mm ${y} 1)
+  fixed(z_mm ${z} 1)
+  string(APPEND prog "${word} X${x_mm} Y${y_mm} Z${z_mm}${arc} F${feed}\n")
+  math(EXPR i "${i} + 1")
+endwhile()
+file(WRITE ${WORK}/random.ngc "${prog}")
+
+set(programs
+  "${SRC}/docs/paper-b/fig2-3d-arc.ngc|"
+  "${SRC}/docs/paper-b/circle.ngc|"
+  "${SRC}/model/gcode/corpus/helix.ngc|"
+  "${SRC}/model/gcode/corpus/paperb_3d.ngc|--steps-per-mm 250"
+  "${WORK}/random.ngc|"
+  "${WORK}/random.ngc|--steps-per-mm 3000 --cycle 2")
+
+set(failed 0)
+set(n 0)
+set(total_pulses 0)
+foreach(entry IN LISTS programs)
+  string(REPLACE "|" ";" parts "${entry}")
+  list(GET parts 0 prog)
+  list(LENGTH parts np)
+  set(extra "")
+  if(np GREATER 1)
+    list(GET parts 1 extra_s)
+    separate_arguments(extra UNIX_COMMAND "${extra_s}")
+  endif()
+  math(EXPR n "${n} + 1")
+  foreach(engine model rtl)
+    execute_process(COMMAND ${CONTOUR} gcode ${prog} --pulses ${extra} --engine ${engine}
+      OUTPUT_FILE ${WORK}/p${n}_${engine}.txt ERROR_VARIABLE err_${engine} RESULT_VARIABLE rc_${engine})
+  endforeach()
+  file(SIZE ${WORK}/p${n}_model.txt size)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK}/p${n}_model.txt ${WORK}/p${n}_rtl.txt
+    RESULT_VARIABLE differ)
+  get_filename_component(name ${prog} NAME)
+  if(NOT rc_model EQUAL 0 OR NOT rc_rtl EQUAL 0 OR differ OR size EQUAL 0)
+    math(EXPR failed "${failed} + 1")
+    # The first differing line, with two lines of context.
+    file(STRINGS ${WORK}/p${n}_model.txt lm LIMIT_COUNT 2000000)
+    file(STRINGS ${WORK}/p${n}_rtl.txt lr LIMIT_COUNT 2000000)
+    list(LENGTH lm nm)
+    list(LENGTH lr nr)
+    set(k 0)
+    set(where "")
+    while(k LESS nm AND k LESS nr)
+      list(GET lm ${k} a)
+      list(GET lr ${k} b)
+      if(NOT a STREQUAL b)
+        set(where "first difference at pulse ${k}: model '${a}', rtl '${b}'")
+        break()
+      endif()
+      math(EXPR k "${k} + 1")
+    endwhile()
+    if(where STREQUAL "")
+      set(where "model ${nm} pulses, rtl ${nr}")
+    endif()
+    message("MISMATCH ${name} ${extra}: exit model ${rc_model} rtl ${rc_rtl}, ${where}\n  ${err_model}${err_rtl}")
+  else()
+    file(STRINGS ${WORK}/p${n}_model.txt lines REGEX "[+-][XYZ]$")
+    list(LENGTH lines np)
+    math(EXPR total_pulses "${total_pulses} + ${np}")
+    message("  ${name} ${extra}: ${np} pulses, identical")
+  endif()
+endforeach()
+
+# Refused: a chord of more than 2^24 - 1 steps (0.1 mm per ms at 2e11 steps/mm).
+math(EXPR n "${n} + 1")
+foreach(engine model rtl)
+  execute_process(COMMAND ${CONTOUR} gcode ${SRC}/docs/paper-b/circle.ngc --pulses --steps-per-mm 2e11
+    --engine ${engine} OUTPUT_QUIET ERROR_VARIABLE err_${engine} RESULT_VARIABLE rc_${engine})
+endforeach()
+if(NOT rc_model EQUAL 2 OR NOT rc_rtl EQUAL 2 OR NOT err_model STREQUAL err_rtl OR NOT err_model MATCHES "out of range")
+  math(EXPR failed "${failed} + 1")
+  message("MISMATCH refused chord: model (${rc_model}) ${err_model} rtl (${rc_rtl}) ${err_rtl}")
+else()
+  message("  refused chord: both exit 2: ${err_model}")
+endif()
+
+math(EXPR passed "${n} - ${failed}")
+message("gcode_engines: ${passed} PASSED, ${failed} FAILED (rtl vs model, ${total_pulses} pulses compared)")
+if(failed GREATER 0)
+  message(FATAL_ERROR "gcode_engines: the step streams differ")
+endif()
