@@ -151,6 +151,29 @@ TEST(Interp3W4, RtlStatesSatisfyTheContractInvariants) {
   std::printf("interp3 W=4 invariants: %llu states checked\n", static_cast<unsigned long long>(checked));
 }
 
+// docs/rtl-3axis.md's clock-by-clock example, worked by hand from the
+// contract: (2, -1, 0) loads Exy = 1, Exz = 2, Eyz = 1 and pulses X, -Y, X;
+// each pulse is on the outputs with the state after it; done comes with the
+// last pulse; a command after the end gives nothing.
+TEST(Interp3W4, DocumentedTimingOfTheMove2m10) {
+  H4 h;
+  h.load(2, -1, 0);
+  EXPECT_EQ(h.strobes(), 0u);
+  EXPECT_EQ(h.state(), (State3{0, 0, 0, 1, 2, 1, 0, false}));
+  const std::optional<Pulse> p1 = h.step(true);
+  EXPECT_EQ(p1, (Pulse{Axis::X, +1}));
+  EXPECT_EQ(h.state(), (State3{1, 0, 0, -1, 2, 1, 1, false}));
+  const std::optional<Pulse> p2 = h.step(true);
+  EXPECT_EQ(p2, (Pulse{Axis::Y, -1}));
+  EXPECT_EQ(h.state(), (State3{1, -1, 0, 3, 2, 1, 2, false}));
+  const std::optional<Pulse> p3 = h.step(true);
+  EXPECT_EQ(p3, (Pulse{Axis::X, +1}));
+  EXPECT_EQ(h.state(), (State3{2, -1, 0, 1, 2, 1, 3, true}));
+  EXPECT_FALSE(h.step(true).has_value());
+  EXPECT_EQ(h.state(), (State3{2, -1, 0, 1, 2, 1, 3, true}));
+  EXPECT_EQ(h.clocks(), 1u + 1u + 4u);  // reset, load, four command clocks
+}
+
 // The command input low in random clocks (1/3 of them, or long holds):
 // no pulse and no state change in those clocks.
 TEST(Interp3W4, CommandGapsHoldTheState) {
