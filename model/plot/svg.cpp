@@ -38,6 +38,15 @@ std::string fmt(double v) {
   return buf;
 }
 
+// Every k-th point, first and last kept, at most `limit` of them.
+std::vector<Point> thin(const std::vector<Point>& pts, std::size_t limit) {
+  if (limit < 2 || pts.size() <= limit) return pts;
+  std::vector<Point> out;
+  out.reserve(limit);
+  for (std::size_t i = 0; i < limit; ++i) out.push_back(pts[i * (pts.size() - 1) / (limit - 1)]);
+  return out;
+}
+
 }  // namespace
 
 std::string escape(const std::string& text) {
@@ -129,8 +138,10 @@ std::string render(const Plot& plot) {
   // Data, clipped to the frame.
   o << "<clipPath id=\"frame\"><rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << pw << "\" height=\""
     << ph << "\"/></clipPath>\n<g clip-path=\"url(#frame)\" fill=\"none\">\n";
-  for (const auto& s : plot.series) {
-    if (s.points.empty()) continue;
+  for (const auto& full : plot.series) {
+    if (full.points.empty()) continue;
+    Series s = full;
+    s.points = thin(full.points, plot.max_points);
     o << "<polyline stroke=\"" << s.color << "\" stroke-width=\"" << s.width << "\""
       << (s.dashed ? " stroke-dasharray=\"6 4\"" : "") << " points=\"";
     for (const auto& p : s.points) o << X(p.x) << ',' << Y(p.y) << ' ';
@@ -140,7 +151,16 @@ std::string render(const Plot& plot) {
         o << "<circle cx=\"" << X(p.x) << "\" cy=\"" << Y(p.y) << "\" r=\"2.5\" fill=\"" << s.color << "\"/>\n";
   }
   o << "</g>\n";
-  // Legend.
+  // Legend, on a translucent box so that it reads over the data.
+  std::size_t entries = 0, longest = 0;
+  for (const auto& s : plot.series)
+    if (!s.label.empty()) {
+      ++entries;
+      longest = std::max(longest, s.label.size());
+    }
+  if (entries > 0)
+    o << "<rect x=\"" << left + 4 << "\" y=\"" << top + 3 << "\" width=\"" << 44 + 7 * longest << "\" height=\""
+      << 16 * entries + 4 << "\" fill=\"white\" fill-opacity=\"0.85\" stroke=\"#ccc\"/>\n";
   double ly = top + 14;
   for (const auto& s : plot.series) {
     if (s.label.empty()) continue;

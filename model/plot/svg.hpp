@@ -3,6 +3,7 @@
 // `--format svg`, the co-simulation report and paper B's plots.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,9 @@ struct Plot {
   bool log_x = false;         // logarithmic x axis (rate sweeps)
   int width = 640;
   int height = 480;
+  // Longer series are thinned evenly to this many points (first and last
+  // kept), so a 10^5-sample profile stays a light file.
+  std::size_t max_points = 4000;
 };
 
 // The whole <svg> element (no XML prolog), ready to write to a file or to

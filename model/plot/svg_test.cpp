@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace contour::plot {
 namespace {
 
@@ -33,6 +35,23 @@ TEST(Svg, EqualAspectKeepsTheSameScaleOnBothAxes) {
   double x0, y0, x1, y1, x2, y2;
   ASSERT_EQ(std::sscanf(s.c_str() + at, "%lf,%lf %lf,%lf %lf,%lf", &x0, &y0, &x1, &y1, &x2, &y2), 6);
   EXPECT_NEAR(x1 - x0, y1 - y2, 0.01) << "coordinates are written to 6 significant digits";
+}
+
+TEST(Svg, LongSeriesAreThinnedKeepingBothEnds) {
+  Plot p;
+  p.max_points = 11;
+  Series s{"ramp", "#000", {}};
+  for (int i = 0; i <= 1000; ++i) s.points.push_back({double(i), double(i % 7)});
+  p.series = {s};
+  const std::string svg = render(p);
+  const auto at = svg.find("points=\"") + 8;
+  const std::string pts = svg.substr(at, svg.find('"', at) - at);
+  EXPECT_EQ(std::count(pts.begin(), pts.end(), ','), 11);
+  // Same drawing as the 11 points 0, 100, ..., 1000 given directly.
+  Plot q = p;
+  q.series[0].points.clear();
+  for (int i = 0; i <= 1000; i += 100) q.series[0].points.push_back({double(i), double(i % 7)});
+  EXPECT_EQ(render(q), svg);
 }
 
 }  // namespace

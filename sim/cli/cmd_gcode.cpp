@@ -10,7 +10,7 @@
 #include "args.hpp"
 #include "gcode/gcode.hpp"
 #include "planner/planner.hpp"
-#include "planner/plot.hpp"
+#include "plot/svg.hpp"
 #include "planner/two_stage.hpp"
 #include "registry.hpp"
 
@@ -140,11 +140,11 @@ int write_svgs(const std::string& dir, const std::string& file, const planner::P
   const std::string name = std::filesystem::path(file).filename().string();
   int files = 0;
   {
-    planner::PlotSpec p;
+    plot::Plot p;
     p.title = "Axis velocity profiles: " + name;
-    p.xlabel = "time (s)";
-    p.ylabel = "velocity (mm/min)";
-    planner::Series vx{"Vx", "#1f77b4", {}}, vy{"Vy", "#d62728", {}}, vz{"Vz", "#2ca02c", {}}, f{"feed", "#999999", {}};
+    p.x_label = "time (s)";
+    p.y_label = "velocity (mm/min)";
+    plot::Series vx{"Vx", "#1f77b4", {}}, vy{"Vy", "#d62728", {}}, vz{"Vz", "#2ca02c", {}}, f{"feed", "#999999", {}};
     for (std::size_t n = 1; n < s.size(); ++n) {
       const Vec3 v = (60.0 / T) * (s[n].p - s[n - 1].p);
       const double t = s[n].t - T / 2;  // the chord's mid-time
@@ -154,7 +154,7 @@ int write_svgs(const std::string& dir, const std::string& file, const planner::P
       f.points.push_back({t, norm(v)});
     }
     p.series = {f, vx, vy, vz};
-    write_file(std::filesystem::path(dir) / "velocity.svg", planner::render_svg(p));
+    write_file(std::filesystem::path(dir) / "velocity.svg", plot::render(p));
     ++files;
   }
   const struct {
@@ -163,15 +163,15 @@ int write_svgs(const std::string& dir, const std::string& file, const planner::P
   } planes[] = {{"xy.svg", 0, 1}, {"yz.svg", 1, 2}, {"zx.svg", 2, 0}};
   const char* names = "XYZ";
   for (const auto& pl : planes) {
-    planner::PlotSpec p;
+    plot::Plot p;
     p.title = std::string("Trajectory in the ") + names[pl.a] + names[pl.b] + " plane: " + name;
-    p.xlabel = std::string(1, names[pl.a]) + " (mm)";
-    p.ylabel = std::string(1, names[pl.b]) + " (mm)";
+    p.x_label = std::string(1, names[pl.a]) + " (mm)";
+    p.y_label = std::string(1, names[pl.b]) + " (mm)";
     p.equal_aspect = true;
-    planner::Series path{"interpolated", "#d62728", {}};
+    plot::Series path{"interpolated", "#d62728", {}};
     for (const auto& x : s) path.points.push_back({x.p[pl.a], x.p[pl.b]});
     p.series = {path};
-    write_file(std::filesystem::path(dir) / pl.file, planner::render_svg(p));
+    write_file(std::filesystem::path(dir) / pl.file, plot::render(p));
     ++files;
   }
   int arcs = 0;
@@ -179,12 +179,12 @@ int write_svgs(const std::string& dir, const std::string& file, const planner::P
     const auto& g = plan.segs[k].geom;
     if (g.kind != planner::Segment::Kind::Arc) continue;
     ++arcs;
-    planner::PlotSpec p;
+    plot::Plot p;
     p.title = std::string("Line ") + std::to_string(g.line) + " (" + kind_name(g) + ") in its UV plane";
-    p.xlabel = "U (mm)";
-    p.ylabel = "V (mm)";
+    p.x_label = "U (mm)";
+    p.y_label = "V (mm)";
     p.equal_aspect = true;
-    planner::Series path{"interpolated", "#d62728", {}}, marks{"Qs, Qc, Qe", "#1f77b4", {}};
+    plot::Series path{"interpolated", "#d62728", {}}, marks{"Qs, Qc, Qe", "#1f77b4", {}, 1.0, true, true};
     for (const auto& x : s) {
       if (x.seg != static_cast<int>(k)) continue;
       const Vec3 w = x.p - g.origin;
@@ -192,7 +192,7 @@ int write_svgs(const std::string& dir, const std::string& file, const planner::P
     }
     marks.points = {{g.qs.u, g.qs.v}, {g.qc.u, g.qc.v}, {g.qe.u, g.qe.v}};
     p.series = {path, marks};
-    write_file(std::filesystem::path(dir) / ("uv-line" + std::to_string(g.line) + ".svg"), planner::render_svg(p));
+    write_file(std::filesystem::path(dir) / ("uv-line" + std::to_string(g.line) + ".svg"), plot::render(p));
     ++files;
   }
   return files;
