@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -93,6 +95,21 @@ std::string render(const Plot& plot) {
   auto X = [&](double x) { return left + (tx(x) - rx.lo) * sx; };
   auto Y = [&](double y) { return top + ph - (y - ry.lo) * sy; };
 
+  // Several plots inlined in one HTML page share one id namespace: name the
+  // clip path after the plot's content (deterministic, distinct per plot).
+  std::uint64_t h = 1469598103934665603ull;
+  auto mix = [&h](double v) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    h = (h ^ bits) * 1099511628211ull;
+  };
+  for (char c : plot.title) mix(c);
+  mix(rx.lo), mix(rx.hi), mix(ry.lo), mix(ry.hi), mix(plot.width), mix(plot.height);
+  for (const auto& s : plot.series)
+    for (const auto& p : thin(s.points, plot.max_points)) mix(p.x), mix(p.y);  // as drawn
+  char clip_id[32];
+  std::snprintf(clip_id, sizeof clip_id, "frame%016llx", static_cast<unsigned long long>(h));
+
   std::ostringstream o;
   o.precision(6);
   o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << plot.width << "\" height=\"" << plot.height
@@ -136,8 +153,8 @@ std::string render(const Plot& plot) {
   o << "<text transform=\"translate(16," << top + ph / 2 << ") rotate(-90)\" text-anchor=\"middle\">"
     << escape(plot.y_label) << "</text>\n";
   // Data, clipped to the frame.
-  o << "<clipPath id=\"frame\"><rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << pw << "\" height=\""
-    << ph << "\"/></clipPath>\n<g clip-path=\"url(#frame)\" fill=\"none\">\n";
+  o << "<clipPath id=\"" << clip_id << "\"><rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << pw << "\" height=\""
+    << ph << "\"/></clipPath>\n<g clip-path=\"url(#" << clip_id << ")\" fill=\"none\">\n";
   for (const auto& full : plot.series) {
     if (full.points.empty()) continue;
     Series s = full;

@@ -37,6 +37,20 @@ TEST(Svg, EqualAspectKeepsTheSameScaleOnBothAxes) {
   EXPECT_NEAR(x1 - x0, y1 - y2, 0.01) << "coordinates are written to 6 significant digits";
 }
 
+TEST(Svg, PlotsInlinedInOnePageClipToTheirOwnFrames) {
+  Plot a, b;
+  a.series.push_back({"a", "#000", {{0, 0}, {1, 1}}});
+  b.series.push_back({"b", "#000", {{0, 0}, {100, 3}}});
+  auto clip_id = [](const std::string& svg) {
+    const auto at = svg.find("<clipPath id=\"") + 14;
+    return svg.substr(at, svg.find('"', at) - at);
+  };
+  const std::string ra = render(a), rb = render(b);
+  EXPECT_NE(clip_id(ra), clip_id(rb));
+  EXPECT_NE(ra.find("clip-path=\"url(#" + clip_id(ra) + ")\""), std::string::npos);
+  EXPECT_EQ(clip_id(ra), clip_id(render(a))) << "deterministic";
+}
+
 TEST(Svg, LongSeriesAreThinnedKeepingBothEnds) {
   Plot p;
   p.max_points = 11;
