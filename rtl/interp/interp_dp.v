@@ -94,7 +94,14 @@ module interp_dp #(
   reg kz_q, k1z_q;                        // k == 0; k == 1 with to == 0 (arc)
   wire kz = kz_q;
   wire d_pos = ~d_q[W+1];                 // D >= 0
-  wire done = kz & in_ex_q & out_ex_q;
+  // Derived flags, registers too (their next values are formed below
+  // from the next values of the flags they combine):
+  //   done_q  = k == 0 & both axes arrived
+  //   lastk_q = k == 0 & one axis arrived, the other one step away
+  //   xf_q    = k == 1 & ci == 1 & co == ti & to == 0 (an inward step
+  //             crosses onto the end point)
+  reg done_q, lastk_q, xf_q;
+  wire done = done_q;
   wire busy = ~done;
   wire st = i_cmd & busy;                  // a step happens in this clock
 
@@ -109,8 +116,7 @@ module interp_dp #(
   // has arrived and the other has one step left, and then the end-point
   // rule fixes the axis, so D plays no part; with one crossing left, when
   // an inward step (D >= 0) crosses onto the end point itself.
-  wire one_left = (in_one_q & out_ex_q) | (in_ex_q & out_one_q);
-  wire last = (kz & one_left) | (d_pos & k1z_q & ci_one_q & co_ti_q);
+  wire last = lastk_q | (d_pos & xf_q);
 
   wire ld = i_valid & (done | (st & last));
   assign o_ready = ld;
@@ -251,6 +257,37 @@ module interp_dp #(
     end
   end
 
+  // Derived flags. Load: from the block's flags. Inward step within the
+  // quadrant, crossing, outward step: from the flags' next values as the
+  // flag registers above form them.
+  wire l_kz = (i_k == 3'd0);
+  wire l_k1z = (i_k == 3'd1) & i_arc & i_flags[F_TO_Z];
+  wire kz_x = (k_q == 3'd1);                     // k after a crossing is 0
+  wire k1z_x = (k_q == 3'd2) & to_z_q;
+  always @(posedge i_clk) begin
+    if (i_rst) begin
+      done_q <= 1'b1;
+      lastk_q <= 1'b0;
+      xf_q <= 1'b0;
+    end else if (ld) begin
+      done_q <= l_kz & i_flags[F_IN_EX] & i_flags[F_OUT_EX];
+      lastk_q <= l_kz & ((i_flags[F_IN_ONE] & i_flags[F_OUT_EX]) | (i_flags[F_IN_EX] & i_flags[F_OUT_ONE]));
+      xf_q <= l_k1z & i_flags[F_CI_ONE] & i_flags[F_CO_TI];
+    end else if (st & inw & ~xing) begin
+      done_q <= kz & in_one_q & out_ex_q;
+      lastk_q <= kz & ((c_ci_ti2 & out_ex_q) | (in_one_q & out_one_q));
+      xf_q <= k1z_q & arc_q & c_ci_two & co_ti_q;
+    end else if (st & inw & xing) begin
+      done_q <= kz_x & co_ti_q & to_z_q;
+      lastk_q <= kz_x & ((c_co_ti1 & to_z_q) | (co_ti_q & to_one_q));
+      xf_q <= k1z_x & c_co_one & ti_z;
+    end else if (st & ~inw) begin
+      done_q <= kz & in_ex_q & out_one_q;
+      lastk_q <= kz & ((in_one_q & out_one_q) | (in_ex_q & c_co_to2));
+      xf_q <= k1z_q & ci_one_q & c_co_tim1;
+    end
+  end
+
   // Output pulse, aligned with the state after the step.
   always @(posedge i_clk) begin
     if (i_rst) begin
@@ -328,6 +365,9 @@ module interp_dp #(
       assert(to_z_q == (to_f == 0) && to_one_q == (to_f == 1));
       assert(k_q <= 3'd4);
       assert(kz_q == (k_q == 3'd0));
+      assert(done_q == (kz_q & in_ex_q & out_ex_q));
+      assert(lastk_q == (kz_q & ((in_one_q & out_ex_q) | (in_ex_q & out_one_q))));
+      assert(xf_q == (k1z_q & ci_one_q & co_ti_q));
       assert(k1z_q == (k_q == 3'd1 && arc_q && to_f == 0));
       if (!arc_q) begin
         // Line: D = A*y - B*x, within [-B, A - 1] (or 0 when A = 0), and
