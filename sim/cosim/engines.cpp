@@ -390,7 +390,9 @@ void IssEngine::cpu_thread() {
       continue;
     }
     auto& m = host_->machine();
-    if (m.halted() && !edge_) {
+    // Halted with nothing pending (the last step was an idle unit): sleep
+    // until the next command edge instead of stepping 1-T idle units.
+    if (m.halted() && !edge_ && m.last().kind == i8085::StepKind::idle) {
       sc_core::wait(rise_ | stop_);
       if (active_) align(period_);
       continue;
