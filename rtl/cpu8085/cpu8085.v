@@ -134,7 +134,11 @@ module cpu8085 (
     else if (halted_q) kind_now = K_IDLE;
     else kind_now = K_INSTR;
   end
-  wire [1:0] kind = unit_t1 ? kind_now : kind_q;
+  // Everything but the sequencer's own registers works from kind_q, valid
+  // from the unit's second T-state on: at the first one no cycle of an
+  // instruction or acknowledge ends, so the pins' decision (kind_now) only
+  // reaches the sequencer, not the datapath (a shorter critical path).
+  wire [1:0] kind = kind_q;
   wire intr_mode = (kind == K_INTR);
 
   // ------------------------------------------------------------ decode
@@ -307,8 +311,10 @@ module cpu8085 (
   end
   // The opcode is known from T4 on; before that no fetch can end.
   wire of_early = (mc_q == 3'd0) && (kind == K_INSTR || kind == K_INTR) && (t_q < 3'd4);
-  wire cyc_end = !of_early && (t_q == cyc_len);
-  wire unit_end = cyc_end && seq_last;
+  // At a unit's first T-state only an idle unit ends (and does no work).
+  wire cyc_end_later = !unit_t1 && !of_early && (t_q == cyc_len);
+  wire cyc_end = unit_t1 ? (kind_now == K_IDLE) : cyc_end_later;
+  wire unit_end = unit_t1 ? (kind_now == K_IDLE) : (cyc_end_later && seq_last);
 
   // Bus outputs.
   always @* begin
@@ -329,7 +335,17 @@ module cpu8085 (
   assign o_wr = is_t2 && (seq_cyc == CY_MW || seq_cyc == CY_IOW);
   assign o_io = (seq_cyc == CY_IOR || seq_cyc == CY_IOW);
   assign o_inta = is_t2 && (seq_cyc == CY_INA);
-  assign o_cycle = seq_cyc;
+  // At a unit's first T-state the cycle type follows the decision.
+  reg [2:0] t1_cyc;
+  always @* begin
+    case (kind_now)
+      K_IACK: t1_cyc = CY_BI;
+      K_IDLE: t1_cyc = CY_HLT;
+      K_INTR: t1_cyc = CY_INA;
+      default: t1_cyc = CY_OF;
+    endcase
+  end
+  assign o_cycle = unit_t1 ? t1_cyc : seq_cyc;
   assign o_tstate = t_q;
 
   // ----------------------------------------------------------------- ALU
@@ -467,7 +483,7 @@ module cpu8085 (
       end
 
       // End of a machine cycle: the instruction's work.
-      if (cyc_end && kind != K_IDLE) begin
+      if (cyc_end_later && kind != K_IDLE) begin
         if (mc_q == 3'd0) begin
           // ---- end of the opcode fetch
           casez (ir_q)
