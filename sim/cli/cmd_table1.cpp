@@ -17,9 +17,9 @@
 #include <stdexcept>
 
 #include "args.hpp"
-#include "i8085/machine.hpp"
 #include "interp/circular.hpp"
 #include "registry.hpp"
+#include "sw8085/interp/board_factory.hpp"
 #include "sw8085/interp/host.hpp"
 
 namespace contour::cli {
@@ -32,7 +32,7 @@ const char* kHelp =
     "T-states (min/mean/max, interrupt acknowledge included), time at 3 MHz, and\n"
     "the highest command rate kept up with, found by driving command pulses at\n"
     "rising rates until the program counts the first overrun. The paper's row\n"
-    "is printed beside ours. --engine 8085 measures on the Verilated CPU (slow).\n";
+    "is printed beside ours. --engine 8085 measures on the Verilated board (slow).\n";
 
 constexpr double kClockHz = 3.0e6;
 
@@ -167,9 +167,8 @@ int cmd_table1(const std::vector<std::string>& argv) {
   if (engine == "iss") {
     factory = i8085::make_iss;
   } else if (engine == "8085") {
-    const auto it = i8085::machines().find("rtl");
-    if (it == i8085::machines().end()) throw UsageError("--engine 8085: the Verilated CPU is not built");
-    factory = it->second.make;
+    factory = sw8085::board_factory();
+    if (!factory) throw UsageError("--engine 8085: the Verilated board rtl/board8085 is not built");
   } else {
     throw UsageError("--engine: unknown engine '" + engine + "' (iss or 8085)");
   }
