@@ -33,8 +33,9 @@ configure: deps
 build: configure
 	@$(CMAKE) --build $(BUILD) -j$(JOBS)
 
-# The paper reproduction: Fig. 2 and Fig. 5 on every engine, then the
-# co-simulation report once sim/cosim is built.
+# The paper reproduction: Fig. 2 and Fig. 5, Table 1 on the 8085 program,
+# then the co-simulation of model, Verilog core and 8085 from 1 kpps to
+# 250 kpps and beyond, with its report in $(BUILD)/report/.
 run: build
 	@echo "== paper A, Fig. 2: contour line 6 5"
 	@$(BUILD)/contour line 6 5 --format steps
@@ -44,6 +45,11 @@ run: build
 	@$(BUILD)/contour arc 6 0 0 6 --ccw --format svg -o $(BUILD)/report/fig5.svg
 	@$(BUILD)/contour line 6 5 --format svg -o $(BUILD)/report/fig2.svg
 	@echo "drawings: $(BUILD)/report/fig2.svg $(BUILD)/report/fig5.svg"
+	@echo "== paper A, Table 1: contour table1"
+	@$(BUILD)/contour table1
+	@echo "== co-simulation: contour cosim --suite paper,smoke --sweep"
+	@$(BUILD)/contour cosim --suite paper,smoke --sweep --report $(BUILD)/report
+	@echo "report: $(BUILD)/report/report.html"
 
 test: build
 	@cd $(BUILD) && ctest -j$(JOBS) --output-on-failure $(CTEST_ARGS)
