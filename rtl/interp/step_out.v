@@ -2,7 +2,7 @@
 //
 // A command pulse reaches the core only when the output can take the pulse
 // it will produce: both channels free and no pulse on its way from the
-// core (the core's pulse output is registered). A command pulse that comes
+// core (the core's pulse output is registered), as of the clock before. A command pulse that comes
 // while a move runs and the output cannot take it does not advance the
 // interpolation; it sets the sticky overrun flag and counts in OVR_COUNT.
 // No pulse is ever dropped after the core has produced it.
@@ -32,10 +32,18 @@ module step_out #(
     output reg  [31:0]   o_ovr_count
 );
 
+  // Ready, a register so the command gate is one gate from flops: the
+  // channels were free, no pulse was on its way and no command went to
+  // the core in the clock before (a channel freed in that clock is seen
+  // one clock later: conservative, never optimistic).
   wire rdy_x, rdy_y;
-  wire ready = rdy_x & rdy_y & ~i_pulse;
-  assign o_cmd = i_cmd & ready;
-  wire overrun = i_cmd & ~ready & i_busy;
+  reg ready_q;
+  always @(posedge i_clk) begin
+    if (i_rst) ready_q <= 1'b0;
+    else ready_q <= rdy_x & rdy_y & ~i_pulse & ~o_cmd;
+  end
+  assign o_cmd = i_cmd & ready_q;
+  wire overrun = i_cmd & ~ready_q & i_busy;
 
   step_chan #(.TW(TW)) u_x (
       .i_clk(i_clk), .i_rst(i_rst), .i_len(i_len), .i_space(i_space), .i_setup(i_setup),
