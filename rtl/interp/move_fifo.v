@@ -28,7 +28,7 @@ module move_fifo #(
   reg [AW:0] wptr_q, rptr_q;
 
   wire [AW:0] used = wptr_q - rptr_q;
-  wire mem_empty = (used == 0);
+  wire mem_empty = (wptr_q == rptr_q);  // equality: shorter than used == 0
   assign o_full = used[AW];
   assign o_used = used;
   assign o_level = {1'b0, used} + {{(AW+1){1'b0}}, o_valid};
