@@ -19,19 +19,6 @@ namespace {
 
 using plot::escape;
 
-// Several SVGs inline in one HTML page share one id space: give each plot's
-// clip path its own id (plot::render always names it "frame").
-std::string unique_ids(std::string svg) {
-  static int n = 0;
-  const std::string id = "frame" + std::to_string(++n);
-  for (const std::string from : {"id=\"frame\"", "url(#frame)"}) {
-    const std::string to = from[0] == 'i' ? "id=\"" + id + "\"" : "url(#" + id + ")";
-    for (std::size_t at = 0; (at = svg.find(from, at)) != std::string::npos; at += to.size()) svg.replace(at, from.size(), to);
-  }
-  return svg;
-}
-
-
 const std::map<std::string, std::string>& engine_colors() {
   static const std::map<std::string, std::string> c = {
       {"model", "#444444"}, {"rtl", "#1f77b4"}, {"iss", "#2ca02c"}, {"8085", "#d62728"}};
@@ -123,7 +110,7 @@ std::string path_svg(const Case& c, const Expected& e, const std::vector<const R
     pl.series.push_back({r->engine + " @ " + rate_label(r->rate_pps) + " (diverged)", "#d62728", pulse_path(r->path),
                          1.5, false, r->path.size() <= 200});
   }
-  return unique_ids(plot::render(pl));
+  return plot::render(pl);
 }
 
 std::string deviation_svg(const Case& c, const Expected& e) {
@@ -144,7 +131,7 @@ std::string deviation_svg(const Case& c, const Expected& e) {
   pl.series.push_back({"bound: 1 pulse", "#999999", {{1, 1}, {double(std::max<std::size_t>(e.pulses.size(), 2)), 1}},
                        1.0, true, false});
   pl.series.push_back({"", "#ffffff", {{1, 0}}, 0.1, false, false});  // keep 0 in view
-  return unique_ids(plot::render(pl));
+  return plot::render(pl);
 }
 
 std::string lost_svg(const std::string& case_name, const std::vector<Row>& rows) {
@@ -162,7 +149,7 @@ std::string lost_svg(const std::string& case_name, const std::vector<Row>& rows)
         s.points.push_back({r.rate_pps, 100.0 * double(r.lost) / double(r.commands)});
     if (!s.points.empty()) pl.series.push_back(s);
   }
-  return unique_ids(plot::render(pl));
+  return plot::render(pl);
 }
 
 // Every case together: the paper's result in one picture.
@@ -193,7 +180,7 @@ std::string lost_all_svg(const std::vector<Row>& rows) {
     for (const auto& [rate, lc] : at) s.points.push_back({rate, 100.0 * double(lc.first) / double(lc.second)});
     if (!s.points.empty()) pl.series.push_back(s);
   }
-  return unique_ids(plot::render(pl));
+  return plot::render(pl);
 }
 
 std::string css() {
