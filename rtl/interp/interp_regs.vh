@@ -1,7 +1,6 @@
 // Generated from rtl/interp/regmap.def by rtl/interp/regmap_gen.cmake: do not edit.
 // Register offsets (byte addresses) and field positions of interp_top.
-// Waiver: a table; no one module uses every entry of it.
-/* verilator lint_off UNUSEDPARAM */
+// A table: no one module uses every entry of it (waiver in rtl/verilator.vlt).
 localparam [7:0] A_ID = 8'h00;
 localparam [31:0] R_ID = 32'h494E5450;
 localparam [7:0] A_PARAMS = 8'h04;
@@ -55,4 +54,3 @@ localparam [31:0] R_BLK_XE = 32'h0;
 localparam [7:0] A_BLK_YE = 8'h44;
 localparam [31:0] R_BLK_YE = 32'h0;
 localparam [7:0] A_PUSH = 8'h48;
-/* verilator lint_on UNUSEDPARAM */

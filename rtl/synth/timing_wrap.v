@@ -2,13 +2,18 @@
 // register to register (in the spirit of PicoRV32's timing wrapper) and
 // the design fits any package: every input of the design comes from a
 // serial-in shift register, every output goes into a parallel-load
-// shift register read out on one pin. Nothing of the design is trimmed.
+// shift register read out on one pin. Nothing of the design is trimmed but
+// the debug outputs a design has for simulation only.
 //
-// The design is selected by a define:
-//   DESIGN_TOP   interp_top: core, output stage, feed generator, position
-//                counters, Wishbone registers (the whole peripheral)
-//   DESIGN_CORE  interp_core (block prep, queue, datapath) + step_out
-//   DESIGN_DP    the datapath interp_dp alone
+// The one timing wrapper of `make synth`; the design is selected by a define:
+//   DESIGN_TOP        interp_top: core, output stage, feed generator,
+//                     position counters, Wishbone registers (the peripheral)
+//   DESIGN_CORE       interp_core (block prep, queue, datapath) + step_out
+//   DESIGN_DP         the datapath interp_dp alone
+//   DESIGN_INTERP3    the 3-axis core interp3_core, state outputs included
+//   DESIGN_CPU8085    the 8085 CPU: bus, interrupt pins, retire strobe
+//   DESIGN_BOARD8085  the whole board8085, ROM from ROM_FILE
+// Each design sets NI (inputs, reset on top) and NO (outputs).
 `default_nettype none
 
 module timing_wrap (
@@ -18,16 +23,39 @@ module timing_wrap (
     output wire o_ser     // serial output
 );
 
-  localparam integer W = 24;
+  // W: the coordinate width of the interpolator designs.
 `ifdef DESIGN_DP
+  localparam integer W = 24;
   localparam integer NI = 36 + 8 * W;  // fields up to bit 33 + 8W, reset on top
   localparam integer NO = 16 + 3 * W;
 `elsif DESIGN_CORE
+  localparam integer W = 24;
   localparam integer NI = 16 + 4 * W + 64 + 1;
   localparam integer NO = 49;
-`else
+`elsif DESIGN_TOP
+  localparam integer W = 24;
   localparam integer NI = 45;  // Wishbone in, the pin, reset on top
   localparam integer NO = 41;
+`elsif DESIGN_INTERP3
+  localparam integer W = 24;
+  localparam integer NI = 3 * W + 6;  // ends, signs, load, cmd, reset
+  localparam integer NO = 7 + 3 * W + 3 * (W + 2);
+`elsif DESIGN_CPU8085
+  localparam integer NI = 15;
+  localparam integer NO = 38;
+`elsif DESIGN_BOARD8085
+  // ROM image, relative to where yosys runs (rtl/synth)
+  localparam ROM_FILE = "../board8085/synth/board_test.memh";
+  localparam integer NI = 31;
+  localparam integer NO = 32;
+`else
+  // No design selected: elaboration stops here.
+  localparam integer NI = 0;
+  localparam integer NO = 0;
+  initial begin
+    $display("timing_wrap: define one of DESIGN_TOP, DESIGN_CORE, DESIGN_DP, DESIGN_INTERP3, DESIGN_CPU8085, DESIGN_BOARD8085");
+    $finish;
+  end
 `endif
 
   // The clock on a global buffer, explicitly: nextpnr runs with
@@ -72,8 +100,7 @@ module timing_wrap (
   );
 `elsif DESIGN_CORE
   wire cmd_core, busy, pulse, pulse_y, pulse_neg;
-  // Waiver: the state outputs are for test benches; timing is of the rest.
-  /* verilator lint_off PINCONNECTEMPTY */
+  // The state outputs are for test benches; timing is of the rest.
   interp_core #(.W(W), .QAW(4)) u_core (
       .i_clk(i_clk), .i_rst(rst), .i_abort(in_q[0]), .i_cmd(cmd_core),
       .i_push(in_q[1]), .i_arc(in_q[2]), .i_cw(in_q[3]), .i_sxn(in_q[4]), .i_syn(in_q[5]),
@@ -84,7 +111,6 @@ module timing_wrap (
       .o_pulse(pulse), .o_pulse_y(pulse_y), .o_pulse_neg(pulse_neg), .o_pulse_last(outs[11]),
       .o_busy(busy), .o_xmag(), .o_xneg(), .o_ymag(), .o_yneg(), .o_d(), .o_q(), .o_k(), .o_arc()
   );
-  /* verilator lint_on PINCONNECTEMPTY */
   step_out #(.TW(16)) u_out (
       .i_clk(i_clk), .i_rst(rst), .i_clear(in_q[11]),
       .i_len(in_q[16 + 4 * W +: 16]), .i_space(in_q[32 + 4 * W +: 16]),
@@ -96,7 +122,7 @@ module timing_wrap (
   );
   assign outs[47:45] = {pulse, pulse_y, pulse_neg};
   assign outs[48] = busy;
-`else
+`elsif DESIGN_TOP
   interp_top #(.W(W), .QAW(4)) u_dut (
       .i_clk(i_clk), .i_rst(rst),
       .i_wb_cyc(in_q[0]), .i_wb_stb(in_q[1]), .i_wb_we(in_q[2]), .i_wb_adr(in_q[10:3]),
@@ -104,6 +130,47 @@ module timing_wrap (
       .i_cmd_pin(in_q[43]),
       .o_step_x(outs[33]), .o_dir_x(outs[34]), .o_step_y(outs[35]), .o_dir_y(outs[36]),
       .o_pulse(outs[37]), .o_pulse_y(outs[38]), .o_pulse_neg(outs[39]), .o_busy(outs[40])
+  );
+`elsif DESIGN_INTERP3
+  interp3_core #(.W(W)) u_dut (
+      .i_clk(i_clk), .i_rst(rst),
+      .i_load(in_q[0]), .i_cmd(in_q[1]),
+      .i_xneg(in_q[2]), .i_yneg(in_q[3]), .i_zneg(in_q[4]),
+      .i_xe(in_q[5 +: W]), .i_ye(in_q[5 + W +: W]), .i_ze(in_q[5 + 2 * W +: W]),
+      .o_step_x(outs[0]), .o_step_y(outs[1]), .o_step_z(outs[2]),
+      .o_dir_x(outs[3]), .o_dir_y(outs[4]), .o_dir_z(outs[5]), .o_done(outs[6]),
+      .o_x(outs[7 +: W]), .o_y(outs[7 + W +: W]), .o_z(outs[7 + 2 * W +: W]),
+      .o_exy(outs[7 + 3 * W +: W + 2]), .o_exz(outs[9 + 4 * W +: W + 2]),
+      .o_eyz(outs[11 + 5 * W +: W + 2])
+  );
+`elsif DESIGN_CPU8085
+  cpu8085 u_dut (
+      .i_clk(i_clk), .i_rst(rst),
+      .o_addr(outs[15:0]), .o_dout(outs[23:16]), .i_din(in_q[7:0]),
+      .o_rd(outs[24]), .o_wr(outs[25]), .o_io(outs[26]), .o_inta(outs[27]),
+      .o_cycle(outs[30:28]), .o_tstate(outs[33:31]),
+      .i_trap(in_q[8]), .i_rst75(in_q[9]), .i_rst65(in_q[10]), .i_rst55(in_q[11]),
+      .i_intr(in_q[12]), .i_sid(in_q[13]),
+      .o_sod(outs[34]), .o_halted(outs[35]), .o_ie(outs[36]), .o_retire(outs[37]),
+      .o_dbg_kind(), .o_dbg_irq(), .o_dbg_ipc(), .o_dbg_op(), .o_dbg_pc(), .o_dbg_sp(),
+      .o_dbg_regs(),
+      .i_dbg_load(1'b0), .i_dbg_pc(16'h0000), .i_dbg_sp(16'h0000), .i_dbg_regs(64'h0)
+  );
+`elsif DESIGN_BOARD8085
+  board8085 #(
+      .ROM_FILE(ROM_FILE)
+  ) u_dut (
+      .i_clk(i_clk), .i_rst(rst),
+      .i_cmd(in_q[0]), .i_trap(in_q[1]), .i_rst65(in_q[2]), .i_rst55(in_q[3]), .i_intr(in_q[4]),
+      .i_intr_vec(in_q[12:5]),
+      .o_step_x(outs[0]), .o_step_y(outs[1]), .o_step_z(outs[2]),
+      .o_dir_x(outs[3]), .o_dir_y(outs[4]), .o_dir_z(outs[5]),
+      .o_done(outs[13:6]), .o_debug(outs[21:14]), .o_debug_we(outs[22]),
+      .i_host_addr(in_q[20:13]), .i_host_wdata(in_q[28:21]), .i_host_we(in_q[29]),
+      .o_host_rdata(outs[30:23]), .o_host_overrun(outs[31]),
+      .o_cpu_addr(), .o_cpu_dout(), .o_cpu_wr(), .o_cpu_io(), .o_retire(),
+      .o_dbg_kind(), .o_dbg_irq(), .o_dbg_ipc(), .o_dbg_op(), .o_dbg_pc(), .o_dbg_sp(),
+      .o_dbg_regs(), .o_halted(), .o_ie(), .o_sod()
   );
 `endif
 

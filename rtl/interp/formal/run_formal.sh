@@ -25,12 +25,12 @@ case "$kind" in
   *) echo "run_formal.sh: KIND must be lines or arcs, not '$kind'" >&2; exit 2 ;;
 esac
 here=$(cd "$(dirname "$0")" && pwd)
-rtl=$(cd "$here/.." && pwd)
+core=$(cd "$here/.." && pwd)
+srcs=$("$core/../filelist" "$core/interp.f" | tr '\n' ' ')
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 yosys -q -l "$log" -p "
-  read_verilog -formal -DFORMAL $def -I$rtl $rtl/interp_dp.v $rtl/blk_prep.v $rtl/move_fifo.v \
-    $rtl/interp_core.v $here/interp_formal.v
+  read_verilog -formal -DFORMAL $def -I$core $srcs $here/interp_formal.v
   chparam -set W $w interp_formal
   prep -top interp_formal
   memory_map

@@ -22,7 +22,10 @@ out=${1:?output directory}
 shift
 widths=${*:-2 3}
 here=$(cd "$(dirname "$0")" && pwd)
-core="$here/../interp3_core.v"
+# The core's sources from its file list (one file: interp3_core.v, the
+# one the mutants below change).
+core=$("$here/../../filelist" "$here/../interp3.f")
+[ "$(echo "$core" | wc -l)" -eq 1 ] || { echo "prove.sh: interp3.f must list one file" >&2; exit 2; }
 mkdir -p "$out"
 
 prove() {  # prove FILE W LOG -> status of yosys

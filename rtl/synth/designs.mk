@@ -1,0 +1,29 @@
+# The designs of `make synth`, one line each, every one in the one timing
+# wrapper (timing_wrap.v, which names them):
+#
+#   $(eval $(call design,<name>,<file list>,<DESIGN_ define>,<hx8k|up5k>,<nextpnr flags>))
+#
+#   core_*:      interp_core (datapath, block prep, queue) + step_out
+#   top_*:       interp_top, the whole Wishbone peripheral
+#   dp_*:        the datapath interp_dp alone
+#   interp3_*:   the 3-axis core (figures: docs/rtl-3axis.md)
+#   cpu8085_*:   the 8085 CPU alone (figures: docs/cpu8085.md)
+#   board8085_*: the board, ROM = the board test program's image
+#
+# The interp designs run nextpnr with --no-promote-globals: timing_wrap puts
+# the clock on SB_GB itself, and without promotion nextpnr keeps high-fanout
+# enables off the few global nets (faster here).
+define design
+DESIGNS += $(1)
+$(1)_SRCS := timing_wrap.v $(shell $(RTL)/filelist $(RTL)/$(2))
+$(1)_INC := $(shell $(RTL)/filelist --incdirs $(RTL)/$(2))
+$(1)_DEFS := -DDESIGN_$(3)
+$(1)_DEV := $(4)
+$(1)_PNR := $(5)
+endef
+
+$(foreach dev,hx8k up5k,$(foreach d,CORE TOP DP,\
+  $(eval $(call design,$(shell echo $(d) | tr A-Z a-z)_$(dev),interp/interp.f,$(d),$(dev),--no-promote-globals))))
+$(eval $(call design,interp3_hx8k,interp3/interp3.f,INTERP3,hx8k,))
+$(foreach dev,hx8k up5k,$(eval $(call design,cpu8085_$(dev),cpu8085/cpu8085.f,CPU8085,$(dev),)))
+$(foreach dev,hx8k up5k,$(eval $(call design,board8085_$(dev),board8085/board8085.f,BOARD8085,$(dev),)))
