@@ -72,7 +72,7 @@ int run_move(const Args& a, const Move& m) {
   const std::string engine_name = a.option_or("engine", "model");
   const auto it = engines().find(engine_name);
   if (it == engines().end())
-    throw UsageError("--engine: unknown engine '" + engine_name + "' (one of " + engine_names() + ")");
+    throw UsageError(unknown_engine(engine_name, engine_names()));
   const std::string format = a.option_or("format", "summary");
   if (format != "steps" && format != "json" && format != "svg" && format != "summary")
     throw UsageError("--format: unknown format '" + format + "' (one of steps, json, svg, summary)");

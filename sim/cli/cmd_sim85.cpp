@@ -76,7 +76,7 @@ int cmd_sim85(const std::vector<std::string>& argv) {
   const std::string engine = args.option_or("engine", "iss");
   auto it = i8085::machines().find(engine);
   if (it == i8085::machines().end())
-    throw UsageError("--engine: unknown machine '" + engine + "' (" + i8085::machine_names() + ")");
+    throw UsageError(unknown_engine(engine, i8085::machine_names()));
 
   i8085::RunOptions opt;
   if (auto m = args.option("max-tstates")) {

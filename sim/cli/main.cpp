@@ -25,6 +25,13 @@ std::string engine_names() {
   return names;
 }
 
+std::string unknown_engine(const std::string& word, const std::string& known) {
+  std::string msg = "--engine: unknown engine '" + word + "' (one of " + known + ")";
+  if (word == "rtl") msg += "; 'rtl' is now 'core' (the Verilog interpolator) or 'cpu' (the Verilog 8085)";
+  if (word == "8085") msg += "; '8085' is now 'cpu' (the Verilog 8085) or 'iss' (the C++ 8085)";
+  return msg;
+}
+
 }  // namespace contour::cli
 
 namespace {

@@ -42,7 +42,13 @@ struct EngineRegistrar {
   explicit EngineRegistrar(EngineInfo e) { engines().emplace(e.name, std::move(e)); }
 };
 
-// Names of the registered engines, "model|rtl|..." for help texts.
+// Names of the registered engines, "model|core|..." for help texts.
 std::string engine_names();
+
+// The engine words, the same in every subcommand (README, "The CLI"):
+// model (the golden C++ model), core (a Verilog interpolator core), iss
+// (the C++ 8085), cpu (the Verilog 8085). The message for a word that is
+// none of `known`, with a hint for the words used before (rtl, 8085).
+std::string unknown_engine(const std::string& word, const std::string& known);
 
 }  // namespace contour::cli

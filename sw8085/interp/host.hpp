@@ -117,7 +117,8 @@ class Host {
   std::array<std::optional<SlotMove>, 2> slots_;
 };
 
-// The program as a contour Engine ("iss", "8085").
+// The program as a contour Engine ("iss": on the ISS; "cpu": on the
+// Verilog board, bound in sim/cli/engine_cpu.cpp).
 class ProgramEngine final : public Engine {
  public:
   ProgramEngine(std::string name, i8085::MachineFactory factory) : name_(std::move(name)), factory_(std::move(factory)) {}

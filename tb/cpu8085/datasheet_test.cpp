@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "i8085/system.hpp"
-#include "rtl_machine.hpp"
+#include "cpu_machine.hpp"
 
 namespace {
 
@@ -47,7 +47,7 @@ int datasheet_tstates(std::uint8_t op, bool taken) {
 
 struct Rig {
   i8085::RamBus bus;
-  std::unique_ptr<i8085::Machine> cpu = cpu8085::make_rtl_machine(bus, i8085::Mode::i8085);
+  std::unique_ptr<i8085::Machine> cpu = cpu8085::make_cpu_machine(bus, i8085::Mode::i8085);
 };
 
 TEST(Datasheet, TStatesOfEveryOpcode) {

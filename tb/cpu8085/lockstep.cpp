@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "rtl_machine.hpp"
+#include "cpu_machine.hpp"
 
 namespace cpu8085::tb {
 
@@ -29,9 +29,7 @@ Lockstep::Lockstep(const std::array<std::uint8_t, 65536>& image, const std::stri
   iss_bus_.mem = image;
   rtl_bus_.mem = image;
   iss_ = i8085::make_iss(iss_bus_, i8085::Mode::i8085);
-  RtlOptions opt;
-  opt.fst_path = fst_path;
-  rtl_ = make_rtl_machine(rtl_bus_, i8085::Mode::i8085, opt);
+  rtl_ = make_cpu_machine(rtl_bus_, i8085::Mode::i8085, fst_path);
 }
 
 void Lockstep::set_regs(const i8085::Regs& r) {

@@ -97,9 +97,7 @@ void random_run(std::uint64_t seed, std::uint64_t steps, Coverage& cov) {
     b = static_cast<std::uint8_t>(rng());
     if (b == 0x76 && rng() % 8 != 0) b = 0x00;  // a few HLTs stay
   }
-  std::string fst;
-  if (const char* p = std::getenv("CPU8085_FST"); p != nullptr && seed == 1) fst = p;
-  Lockstep ls(mem, fst);
+  Lockstep ls(mem);  // CONTOUR_FST=FILE: the waveform of the last run
   ls.set_in_value([](std::uint8_t port, std::uint64_t n) {
     return static_cast<std::uint8_t>(port * 37u + n * 101u + (n >> 8));
   });

@@ -1,4 +1,4 @@
-# cli_engines.cmake (cmake -P): `contour line|arc ... --engine rtl` must
+# cli_engines.cmake (cmake -P): `contour line|arc ... --engine core` must
 # print exactly what `--engine model` prints: --format steps and summary,
 # and the same error for a refused move. Moves: the paper's examples, fixed
 # cases and pseudo-random ones (seeded, so every run checks the same).
@@ -52,22 +52,22 @@ foreach(shown IN LISTS cases)
   separate_arguments(c UNIX_COMMAND "${shown}")
   foreach(fmt steps summary)
     set(out_model "")
-    set(out_rtl "")
+    set(out_core "")
     execute_process(COMMAND ${CONTOUR} ${c} --engine model --format ${fmt}
       OUTPUT_VARIABLE out_model ERROR_VARIABLE err_model RESULT_VARIABLE rc_model)
-    execute_process(COMMAND ${CONTOUR} ${c} --engine rtl --format ${fmt}
-      OUTPUT_VARIABLE out_rtl ERROR_VARIABLE err_rtl RESULT_VARIABLE rc_rtl)
+    execute_process(COMMAND ${CONTOUR} ${c} --engine core --format ${fmt}
+      OUTPUT_VARIABLE out_core ERROR_VARIABLE err_core RESULT_VARIABLE rc_core)
     math(EXPR n "${n} + 1")
     # The summary may name the engine; compare it with the name taken out.
-    string(REPLACE "rtl" "ENGINE" out_rtl_n "${out_rtl}")
+    string(REPLACE "core" "ENGINE" out_core_n "${out_core}")
     string(REPLACE "model" "ENGINE" out_model_n "${out_model}")
-    string(REPLACE "rtl" "ENGINE" err_rtl_n "${err_rtl}")
+    string(REPLACE "core" "ENGINE" err_core_n "${err_core}")
     string(REPLACE "model" "ENGINE" err_model_n "${err_model}")
-    if(NOT rc_model EQUAL rc_rtl OR NOT out_model_n STREQUAL out_rtl_n OR NOT err_model_n STREQUAL err_rtl_n)
+    if(NOT rc_model EQUAL rc_core OR NOT out_model_n STREQUAL out_core_n OR NOT err_model_n STREQUAL err_core_n)
       math(EXPR failed "${failed} + 1")
       string(SUBSTRING "${out_model}" 0 300 sm)
-      string(SUBSTRING "${out_rtl}" 0 300 sr)
-      message("MISMATCH contour ${shown} --format ${fmt}\n  model (${rc_model}): ${sm}${err_model}\n  rtl   (${rc_rtl}): ${sr}${err_rtl}")
+      string(SUBSTRING "${out_core}" 0 300 sr)
+      message("MISMATCH contour ${shown} --format ${fmt}\n  model (${rc_model}): ${sm}${err_model}\n  core  (${rc_core}): ${sr}${err_core}")
     elseif(fmt STREQUAL "steps" AND rc_model EQUAL 0 AND out_model STREQUAL "" AND NOT shown STREQUAL "line 0 0")
       math(EXPR failed "${failed} + 1")
       message("EMPTY contour ${shown}: no pulses from either engine")
@@ -75,7 +75,7 @@ foreach(shown IN LISTS cases)
   endforeach()
 endforeach()
 math(EXPR passed "${n} - ${failed}")
-message("cli_engines: ${passed} PASSED, ${failed} FAILED (rtl vs model, ${n} runs)")
+message("cli_engines: ${passed} PASSED, ${failed} FAILED (core vs model, ${n} runs)")
 if(failed GREATER 0)
   message(FATAL_ERROR "cli_engines: the engines differ")
 endif()

@@ -291,7 +291,7 @@ TEST(InterpCore, BackToBackBlocksHaveNoGap) {
   for (std::size_t c = 0; c < want.size() + 40 && got.size() < want.size(); ++c) {
     h.tick();
     if (auto o = h.pulse()) {
-      if (got.empty()) first = h.cycle();
+      if (got.empty()) first = h.clocks();
       got.push_back(*o);
     } else if (!got.empty()) {
       ++gaps;

@@ -1,6 +1,6 @@
 # gcode_engines.cmake (cmake -P): the two-stage step stream of
 # `contour gcode FILE --pulses` must be byte for byte the same with
-# `--engine rtl` (each cycle's chord on the Verilated interp3_core) as with
+# `--engine core` (each cycle's chord on the Verilated interp3_core) as with
 # `--engine model` (Linear3<24>): paper B's programs, the G-code corpus's
 # 3D and helix programs, and a pseudo-random program (seeded, so every run
 # checks the same); and a chord too long for 24 bits must be refused by
@@ -106,19 +106,19 @@ foreach(entry IN LISTS programs)
     separate_arguments(extra UNIX_COMMAND "${extra_s}")
   endif()
   math(EXPR n "${n} + 1")
-  foreach(engine model rtl)
+  foreach(engine model core)
     execute_process(COMMAND ${CONTOUR} gcode ${prog} --pulses ${extra} --engine ${engine}
       OUTPUT_FILE ${WORK}/p${n}_${engine}.txt ERROR_VARIABLE err_${engine} RESULT_VARIABLE rc_${engine})
   endforeach()
   file(SIZE ${WORK}/p${n}_model.txt size)
-  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK}/p${n}_model.txt ${WORK}/p${n}_rtl.txt
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK}/p${n}_model.txt ${WORK}/p${n}_core.txt
     RESULT_VARIABLE differ)
   get_filename_component(name ${prog} NAME)
-  if(NOT rc_model EQUAL 0 OR NOT rc_rtl EQUAL 0 OR differ OR size EQUAL 0)
+  if(NOT rc_model EQUAL 0 OR NOT rc_core EQUAL 0 OR differ OR size EQUAL 0)
     math(EXPR failed "${failed} + 1")
     # The first differing line, with two lines of context.
     file(STRINGS ${WORK}/p${n}_model.txt lm LIMIT_COUNT 2000000)
-    file(STRINGS ${WORK}/p${n}_rtl.txt lr LIMIT_COUNT 2000000)
+    file(STRINGS ${WORK}/p${n}_core.txt lr LIMIT_COUNT 2000000)
     list(LENGTH lm nm)
     list(LENGTH lr nr)
     set(k 0)
@@ -127,15 +127,15 @@ foreach(entry IN LISTS programs)
       list(GET lm ${k} a)
       list(GET lr ${k} b)
       if(NOT a STREQUAL b)
-        set(where "first difference at pulse ${k}: model '${a}', rtl '${b}'")
+        set(where "first difference at pulse ${k}: model '${a}', core '${b}'")
         break()
       endif()
       math(EXPR k "${k} + 1")
     endwhile()
     if(where STREQUAL "")
-      set(where "model ${nm} pulses, rtl ${nr}")
+      set(where "model ${nm} pulses, core ${nr}")
     endif()
-    message("MISMATCH ${name} ${extra_s}: exit model ${rc_model} rtl ${rc_rtl}, ${where}\n  ${err_model}${err_rtl}")
+    message("MISMATCH ${name} ${extra_s}: exit model ${rc_model} core ${rc_core}, ${where}\n  ${err_model}${err_core}")
   else()
     file(STRINGS ${WORK}/p${n}_model.txt lines REGEX "[+-][XYZ]$")
     list(LENGTH lines np)
@@ -146,19 +146,19 @@ endforeach()
 
 # Refused: a chord of more than 2^24 - 1 steps (0.1 mm per ms at 2e11 steps/mm).
 math(EXPR n "${n} + 1")
-foreach(engine model rtl)
+foreach(engine model core)
   execute_process(COMMAND ${CONTOUR} gcode ${SRC}/docs/paper-b/circle.ngc --pulses --steps-per-mm 2e11
     --engine ${engine} OUTPUT_QUIET ERROR_VARIABLE err_${engine} RESULT_VARIABLE rc_${engine})
 endforeach()
-if(NOT rc_model EQUAL 2 OR NOT rc_rtl EQUAL 2 OR NOT err_model STREQUAL err_rtl OR NOT err_model MATCHES "out of range")
+if(NOT rc_model EQUAL 2 OR NOT rc_core EQUAL 2 OR NOT err_model STREQUAL err_core OR NOT err_model MATCHES "out of range")
   math(EXPR failed "${failed} + 1")
-  message("MISMATCH refused chord: model (${rc_model}) ${err_model} rtl (${rc_rtl}) ${err_rtl}")
+  message("MISMATCH refused chord: model (${rc_model}) ${err_model} core (${rc_core}) ${err_core}")
 else()
   message("  refused chord: both exit 2: ${err_model}")
 endif()
 
 math(EXPR passed "${n} - ${failed}")
-message("gcode_engines: ${passed} PASSED, ${failed} FAILED (rtl vs model, ${total_pulses} pulses compared)")
+message("gcode_engines: ${passed} PASSED, ${failed} FAILED (core vs model, ${total_pulses} pulses compared)")
 if(failed GREATER 0)
   message(FATAL_ERROR "gcode_engines: the step streams differ")
 endif()

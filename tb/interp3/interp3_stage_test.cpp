@@ -1,4 +1,4 @@
-// Pulse stage "rtl" (rtl/interp3/sim/interp3_stage.cpp) against the
+// The chord stage on the Verilog core (interp3_stage.hpp) against the
 // model's stage 2 (planner::two_stage_model): the same timed pulses, in
 // the same order, for paper B's programs planned by the planner and for
 // random chords; the same refusal for a chord beyond 24 bits.
@@ -21,6 +21,16 @@ namespace {
 
 using planner::StepChord;
 using planner::TimedPulse;
+
+// The core's stage on the planner's chords (the conversion the engine
+// binding in sim/cli does).
+std::vector<TimedPulse> core_stage(const std::vector<StepChord>& chords, double cycle_s) {
+  std::vector<Chord> plain;
+  for (const StepChord& c : chords) plain.push_back({c.dx, c.dy, c.dz});
+  std::vector<TimedPulse> out;
+  for (const TimedStep& s : run_chords(plain, cycle_s)) out.push_back({s.t, s.pulse});
+  return out;
+}
 
 // Empty when equal; else the first difference with its neighbours.
 std::string first_difference(const std::vector<TimedPulse>& model, const std::vector<TimedPulse>& rtl) {
@@ -63,7 +73,7 @@ TEST(Interp3Stage, PaperBProgramsGiveTheModelsPulses) {
     ASSERT_FALSE(text.empty()) << file;
     const auto chords = chords_of(text, 1000);
     const auto model = planner::two_stage_model(chords, 1e-3);
-    const auto rtl = rtl_pulse_stage(chords, 1e-3);
+    const auto rtl = core_stage(chords, 1e-3);
     ASSERT_GT(model.size(), 100000u) << file;  // 2.46 s at up to 100 mm/s, 1000 steps/mm
     EXPECT_EQ(first_difference(model, rtl), "") << file;
     std::printf("%s: %zu chords, %zu pulses, identical\n", file, chords.size(), rtl.size());
@@ -84,7 +94,7 @@ TEST(Interp3Stage, RandomChordsGiveTheModelsPulses) {
   chords.push_back({0, 0, 0});
   chords.push_back({(1 << 20) + 3, -1, 7});
   const auto model = planner::two_stage_model(chords, 2e-3);
-  const auto rtl = rtl_pulse_stage(chords, 2e-3);
+  const auto rtl = core_stage(chords, 2e-3);
   EXPECT_EQ(first_difference(model, rtl), "");
 }
 
@@ -97,7 +107,7 @@ TEST(Interp3Stage, ChordBeyond24BitsIsRefusedLikeTheModel) {
     model_msg = e.what();
   }
   try {
-    rtl_pulse_stage(chords, 1e-3);
+    core_stage(chords, 1e-3);
   } catch (const InputError& e) {
     rtl_msg = e.what();
   }

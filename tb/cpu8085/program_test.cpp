@@ -1,22 +1,20 @@
-// The same program on the Verilated 8085 CPU (rtl/cpu8085) with the C++
-// board, and on the Verilated board rtl/board8085 (the engine "8085").
-// Built only when Verilator is there.
+// The interpolation program (sw8085/interp) on the Verilated 8085 CPU
+// (rtl/cpu8085) with the C++ board, and on the Verilated board
+// rtl/board8085 (the engine "cpu"), against the golden model.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 
+#include "board_machine.hpp"
+#include "cpu_machine.hpp"
 #include "interp/engine.hpp"
-#include "sw8085/interp/board_factory.hpp"
 #include "sw8085/interp/host.hpp"
-
-#ifdef SW8085_HAVE_RTL
-#include "rtl_machine.hpp"
 
 namespace contour::sw8085 {
 namespace {
 
 std::unique_ptr<i8085::Machine> rtl(i8085::Bus& bus, i8085::Mode mode) {
-  return cpu8085::make_rtl_machine(bus, mode);
+  return cpu8085::make_cpu_machine(bus, mode);
 }
 
 void expect_same(Host& h, const Move& m) {
@@ -68,8 +66,7 @@ TEST(Rtl, OverrunsAreCountedOnTheVerilogCpu) {
 
 // The engine "8085": the board in Verilog.
 TEST(Board, PaperExamplesSmallMovesQueueAndOverruns) {
-  const auto board = board_factory();
-  if (!board) GTEST_SKIP() << "rtl/board8085 is not built";
+  const i8085::MachineFactory board = board8085::make_board_machine;
   {
     // One board at a time: two Verilated boards alive together deadlock in
     // their destructors (Verilator 5.006, VerilatedContextImp::scopeErase).
@@ -97,4 +94,3 @@ TEST(Board, PaperExamplesSmallMovesQueueAndOverruns) {
 
 }  // namespace
 }  // namespace contour::sw8085
-#endif

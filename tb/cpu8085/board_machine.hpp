@@ -1,7 +1,8 @@
 // The Verilated board (rtl/board8085, docs/board8085.md) as an
 // i8085::Machine, so that a host written for the ISS on a C++ model of the
 // board (e.g. sw8085/interp's Host and BoardBus) runs the program on the
-// Verilog board instead: `factory = board8085::make_board_machine`.
+// Verilog board instead: `factory = board8085::make_board_machine` (the
+// engine "cpu" of sim/cli).
 //
 // The CPU reads its own ROM, RAM, mailbox and I/O ports. The given Bus is
 // the host's view: at construction its 0x0000-0x27FF and 0x3000-0x30FF are

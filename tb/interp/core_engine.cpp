@@ -1,4 +1,4 @@
-#include "rtl_engine.hpp"
+#include "core_engine.hpp"
 
 #include <stdexcept>
 
@@ -7,18 +7,18 @@
 
 namespace contour::rtl {
 
-struct RtlEngine::Impl {
+struct CoreEngine::Impl {
   CoreHarness<Vinterp_w24, 24> h;
 };
 
-RtlEngine::RtlEngine() : impl_(std::make_unique<Impl>()) {}
-RtlEngine::~RtlEngine() = default;
+CoreEngine::CoreEngine() : impl_(std::make_unique<Impl>()) {}
+CoreEngine::~CoreEngine() = default;
 
-RunResult RtlEngine::run(const Move& m) {
+RunResult CoreEngine::run(const Move& m) {
   const Block b = make_block<24>(m);
   RunResult r = impl_->h.run(b, pulse_bound(m));
   if (!r.final_state.done)
-    throw std::runtime_error("rtl: the core did not end '" + describe(m) + "' within " +
+    throw std::runtime_error("core: the core did not end '" + describe(m) + "' within " +
                              std::to_string(pulse_bound(m)) + " pulses");
   return r;
 }

@@ -1,5 +1,6 @@
-// The Verilated interp_core at W = 24 behind the contour::Engine seam
-// (`contour ... --engine rtl`).
+// The Verilated interp_core at W = 24 behind the contour::Engine seam: the
+// engine "core" of `contour line|arc --engine core`, registered by
+// sim/cli/engine_core.cpp.
 #pragma once
 
 #include <memory>
@@ -9,11 +10,11 @@
 
 namespace contour::rtl {
 
-class RtlEngine final : public Engine {
+class CoreEngine final : public Engine {
  public:
-  RtlEngine();
-  ~RtlEngine() override;
-  std::string name() const override { return "rtl"; }
+  CoreEngine();
+  ~CoreEngine() override;
+  std::string name() const override { return "core"; }
   // Throws InputError outside the accepted domain (the host's validation),
   // std::runtime_error if the core does not end the move.
   RunResult run(const Move& m) override;

@@ -9,12 +9,12 @@
 
 namespace contour::rtl3 {
 
-std::vector<planner::TimedPulse> rtl_pulse_stage(const std::vector<planner::StepChord>& chords, double cycle_s) {
+std::vector<TimedStep> run_chords(const std::vector<Chord>& chords, double cycle_s) {
   Interp3Harness<Vinterp3_w24, 24> h;
-  std::vector<planner::TimedPulse> out;
+  std::vector<TimedStep> out;
   auto mag = [](std::int64_t v) { return static_cast<std::uint64_t>(v < 0 ? -v : v); };
   for (std::size_t n = 0; n < chords.size(); ++n) {
-    const planner::StepChord& c = chords[n];
+    const Chord& c = chords[n];
     h.load(c.dx, c.dy, c.dz);  // throws InputError beyond 2^24 - 1 steps
     const std::uint64_t total = mag(c.dx) + mag(c.dy) + mag(c.dz);
     const double t0 = static_cast<double>(n) * cycle_s;
