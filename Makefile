@@ -5,7 +5,8 @@
 #   make build   configure and build everything; the CLI is build/contour
 #   make bench   speed figures (Google Benchmark, callgrind)
 #   make synth   yosys + nextpnr-ice40: LCs and Fmax on HX8K and UP5K
-#   make lint    verilator --lint-only -Wall over rtl/
+#   make lint    verilator --lint-only -Wall over rtl/ (every core's file list)
+#   make formal  the formal proofs and their mutants (ctest -L formal)
 #   make deps    install what is missing (apt-get, npm ci); run by the above
 #   make clean   remove build/
 #
@@ -17,12 +18,12 @@ JOBS    ?= 2
 CMAKE   ?= cmake
 CTEST_ARGS ?=
 
-.PHONY: all deps configure build run test bench synth lint clean help
+.PHONY: all deps configure build run test bench synth lint formal clean help
 
 all: build
 
 help:
-	@sed -n '3,13p' Makefile
+	@sed -n '3,14p' Makefile
 
 deps:
 	@.ci/install-deps
@@ -64,6 +65,9 @@ synth: deps
 
 lint: deps
 	@$(MAKE) --no-print-directory -C rtl lint
+
+formal: configure
+	@cd $(BUILD) && ctest -L formal --output-on-failure $(CTEST_ARGS)
 
 clean:
 	rm -rf $(BUILD)

@@ -1,5 +1,5 @@
 // rtl/interp: paper A's interpolator, the one file list that CMake, lint,
-// synthesis, formal and the co-simulation read (rtl/README.md: the format).
+// synthesis, formal and the co-simulation read (the format: rtl/filelist).
 +incdir+interp
 interp/interp_top.v
 interp/wb_regs.v

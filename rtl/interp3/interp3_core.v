@@ -1,7 +1,7 @@
 // interp3_core: paper A's reference-pulse linear interpolator extended to
 // three axes (X, Y, Z), one interpolation step per clock.
 //
-// Executes the contract of docs/algorithm-3axis.md; the golden model is
+// Executes the contract of docs/algorithm.md, "Linear on three axes"; the golden model is
 // contour::Linear3<W> (model/interp/linear3.hpp). Registers:
 //
 //   a, b, c        W bits    |XE|, |YE|, |ZE| of the loaded move
@@ -59,7 +59,7 @@ module interp3_core #(
     output wire           o_dir_y,
     output wire           o_dir_z,
     output wire           o_done,   // the move has reached its end point
-    // Observable state (docs/algorithm-3axis.md, State3): magnitudes.
+    // Observable state (docs/algorithm.md, "Linear on three axes", State3): magnitudes.
     output wire [W-1:0]   o_x,
     output wire [W-1:0]   o_y,
     output wire [W-1:0]   o_z,
@@ -263,7 +263,7 @@ module interp3_core #(
     if (!past_valid_f) assume (i_rst);
   end
 
-  // Invariants of every state (docs/algorithm-3axis.md, "Registers").
+  // Invariants of every state (docs/algorithm.md, "Linear on three axes", "Registers").
   always @(*) begin
     if (past_valid_f) begin
       // Three discriminant invariants, exactly.

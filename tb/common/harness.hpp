@@ -21,6 +21,7 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace contour::tb {
 
@@ -35,11 +36,14 @@ inline std::string fst_request(std::string path) {
 template <class V>
 class Harness {
  public:
-  // `instance` names the model's scope in the waveform.
-  explicit Harness(std::string fst_path = "", const char* instance = "TOP")
+  // `instance` names the model's scope in the waveform; `plusargs` are what
+  // the model's $value$plusargs sees (none from the process's command line).
+  explicit Harness(std::string fst_path = "", const char* instance = "TOP",
+                   const std::vector<std::string>& plusargs = {})
       : ctx_(std::make_unique<VerilatedContext>()) {
-    static const char* argv[] = {"contour-tb"};  // no plusargs from the process
-    ctx_->commandArgs(1, argv);
+    std::vector<const char*> argv = {"contour-tb"};
+    for (const std::string& a : plusargs) argv.push_back(a.c_str());
+    ctx_->commandArgs(static_cast<int>(argv.size()), argv.data());
     fst_path = fst_request(std::move(fst_path));
     if (!fst_path.empty()) ctx_->traceEverOn(true);
     top_ = std::make_unique<V>(ctx_.get(), instance);

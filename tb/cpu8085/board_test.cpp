@@ -17,8 +17,9 @@
 #include "i8085/cpu.hpp"
 #include "i8085/hex.hpp"
 #include "i8085/machine.hpp"
+#include "debug_ports.hpp"
+#include "harness.hpp"
 #include "lockstep.hpp"
-#include "verilated.h"
 
 #ifndef BOARD_TEST_HEX
 #error "BOARD_TEST_HEX and BOARD_TEST_MEMH are set by tb/cpu8085/CMakeLists.txt"
@@ -72,60 +73,42 @@ class BoardModel : public i8085::Bus {
   std::vector<Access> log;
 };
 
-// The Verilated board, stepped one CPU unit at a time.
-class BoardSim {
+// The Verilated board on the harness base, stepped one CPU unit at a time;
+// its ROM comes from the plusarg +rom= (the board's own loader).
+class BoardSim : public contour::tb::Harness<Vboard8085> {
  public:
-  explicit BoardSim(const std::string& memh) : ctx_(new VerilatedContext) {
-    const std::string arg = "+rom=" + memh;
-    const char* argv[] = {"board_test", arg.c_str()};
-    ctx_->commandArgs(2, argv);
-    top_ = std::make_unique<Vboard8085>(ctx_.get(), "board");
-    top_->i_intr_vec = 0xFF;
-    top_->i_rst = 1;
-    clock();
-    top_->i_rst = 0;
+  explicit BoardSim(const std::string& memh) : Harness("", "board", {"+rom=" + memh}) {
+    top().i_intr_vec = 0xFF;
+    hold_reset(1);
   }
-  ~BoardSim() { top_->final(); }
 
   // Runs one unit. A host write given here is applied in its first clock;
   // host_raddr is read in the first clock and returned in `host_rdata`.
   int step(bool host_we, std::uint8_t waddr, std::uint8_t wdata, std::uint8_t raddr) {
     log.clear();
     int t = 0;
-    top_->i_host_we = host_we;
-    top_->i_host_addr = host_we ? waddr : raddr;
-    top_->i_host_wdata = wdata;
+    top().i_host_we = host_we;
+    top().i_host_addr = host_we ? waddr : raddr;
+    top().i_host_wdata = wdata;
     do {
-      top_->i_clk = 0;
-      top_->eval();
-      if (top_->o_cpu_wr) log.push_back({top_->o_cpu_io != 0, top_->o_cpu_io ? static_cast<std::uint16_t>(top_->o_cpu_addr & 0xFF)
-                                                                             : static_cast<std::uint16_t>(top_->o_cpu_addr),
-                                         top_->o_cpu_dout});
-      top_->i_clk = 1;
-      top_->eval();
+      clock_low();
+      record_write();
+      clock_high();
       ++t;
       if (t == 1) {
-        if (!host_we) host_rdata = top_->o_host_rdata;
-        top_->i_host_we = 0;
+        if (!host_we) host_rdata = top().o_host_rdata;
+        top().i_host_we = 0;
       }
-      for (int axis = 0; axis < 3; ++axis) {
-        const bool step = axis == 0 ? top_->o_step_x : axis == 1 ? top_->o_step_y : top_->o_step_z;
-        const bool neg = axis == 0 ? top_->o_dir_x : axis == 1 ? top_->o_dir_y : top_->o_dir_z;
-        if (step) ++(neg ? pulses.neg : pulses.pos)[static_cast<std::size_t>(axis)];
-      }
-    } while (!top_->o_retire);
+      count_steps();
+    } while (!top().o_retire);
     tstates += static_cast<std::uint64_t>(t);
     return t;
   }
 
   i8085::Regs regs() const {
-    const std::uint64_t r = top_->o_dbg_regs;
-    auto byte = [r](int i) { return static_cast<std::uint8_t>(r >> (8 * i)); };
-    return {byte(7), byte(6), byte(5), byte(4), byte(3), byte(2), byte(1), byte(0),
-            static_cast<std::uint16_t>(top_->o_dbg_sp), static_cast<std::uint16_t>(top_->o_dbg_pc)};
+    return regs_of(top().o_dbg_regs, static_cast<std::uint16_t>(top().o_dbg_sp),
+                   static_cast<std::uint16_t>(top().o_dbg_pc));
   }
-
-  Vboard8085& top() { return *top_; }
 
   std::vector<Access> log;
   Pulses pulses;
@@ -133,15 +116,58 @@ class BoardSim {
   std::uint8_t host_rdata = 0;
 
  private:
-  void clock() {
-    top_->i_clk = 0;
-    top_->eval();
-    top_->i_clk = 1;
-    top_->eval();
+  void record_write() {
+    if (!top().o_cpu_wr) return;
+    const bool io = top().o_cpu_io != 0;
+    const auto addr = static_cast<std::uint16_t>(io ? top().o_cpu_addr & 0xFF : top().o_cpu_addr);
+    log.push_back({io, addr, top().o_cpu_dout});
   }
-  std::unique_ptr<VerilatedContext> ctx_;
-  std::unique_ptr<Vboard8085> top_;
+
+  void count_steps() {
+    const std::array<bool, 3> step = {top().o_step_x != 0, top().o_step_y != 0, top().o_step_z != 0};
+    const std::array<bool, 3> neg = {top().o_dir_x != 0, top().o_dir_y != 0, top().o_dir_z != 0};
+    for (std::size_t axis = 0; axis < 3; ++axis)
+      if (step[axis]) ++(neg[axis] ? pulses.neg : pulses.pos)[axis];
+  }
 };
+
+// The host's side of the test: the move's two mailbox writes, then reads
+// of the report bytes; command pulses high for one step every ~400
+// T-states until seven are sent.
+struct HostScript {
+  const std::vector<std::pair<std::uint8_t, std::uint8_t>> writes = {{0x00, 0x0D}, {0x01, 7}};
+  std::size_t next_write = 0;
+  bool cmd = false;
+  int pulses_sent = 0;
+  std::uint64_t next_pulse = 400;
+
+  void next_command(std::uint64_t tstates, BoardModel& model) {
+    if (cmd) {
+      cmd = false;
+    } else if (pulses_sent < 7 && tstates >= next_pulse) {
+      cmd = true;
+      ++pulses_sent;
+      ++model.cmd_edges;
+      next_pulse = tstates + 400;
+    }
+  }
+};
+
+// What differs between the ISS on the model and the board after a step
+// ("" when nothing does).
+std::string first_difference(const i8085::Machine& iss, const BoardModel& model, const BoardSim& rtl,
+                             bool host_wrote, std::uint8_t expect_host) {
+  auto sorted = [](std::vector<Access> v) {
+    std::stable_sort(v.begin(), v.end());
+    return v;
+  };
+  if (iss.tstates() != rtl.tstates) return "cumulative T-states";
+  if (!(iss.regs() == rtl.regs())) return "registers";
+  if (sorted(model.log) != sorted(rtl.log)) return "memory / port writes";
+  if (!(model.pulses == rtl.pulses)) return "step pulses";
+  if (!host_wrote && rtl.host_rdata != expect_host) return "host read of the mailbox";
+  return "";
+}
 
 TEST(Board, CommandPulsesStepsMailboxAndDoneInLockstep) {
   BoardModel model;
@@ -154,52 +180,24 @@ TEST(Board, CommandPulsesStepsMailboxAndDoneInLockstep) {
   BoardSim rtl(BOARD_TEST_MEMH);
 
   // The move: 7 pulses, each X+ step with Y- step (bits 0, 2, 3).
-  const std::vector<std::pair<std::uint8_t, std::uint8_t>> host_writes = {{0x00, 0x0D}, {0x01, 7}};
-  std::size_t next_write = 0;
-  bool cmd = false;
-  int pulses_sent = 0;
-  std::uint64_t next_pulse = 400;
+  HostScript host;
   std::deque<std::string> context;
-  for (int n = 0; n < 20000 && !(model.done == 1 && pulses_sent == 7 && iss->halted()); ++n) {
+  for (int n = 0; n < 20000 && !(model.done == 1 && host.pulses_sent == 7 && iss->halted()); ++n) {
     // Host: the move parameters, one write per step; a read otherwise.
-    bool we = false;
-    std::uint8_t wa = 0, wd = 0;
+    const bool we = host.next_write < host.writes.size();
+    const auto [wa, wd] = we ? host.writes[host.next_write++] : std::pair<std::uint8_t, std::uint8_t>{0, 0};
+    if (we) model.mbx[wa] = wd;
     const std::uint8_t ra = static_cast<std::uint8_t>(0x80 + n % 4);
-    if (next_write < host_writes.size()) {
-      we = true;
-      wa = host_writes[next_write].first;
-      wd = host_writes[next_write].second;
-      model.mbx[wa] = wd;
-      ++next_write;
-    }
     const std::uint8_t expect_host = model.mbx[ra];
-    // Command pulses: high for one step, every ~400 T-states.
-    if (cmd) {
-      cmd = false;
-    } else if (pulses_sent < 7 && iss->tstates() >= next_pulse) {
-      cmd = true;
-      ++pulses_sent;
-      ++model.cmd_edges;
-      next_pulse = iss->tstates() + 400;
-    }
-    iss->set_rst75(cmd);
-    rtl.top().i_cmd = cmd;
+    host.next_command(iss->tstates(), model);
+    iss->set_rst75(host.cmd);
+    rtl.top().i_cmd = host.cmd;
 
     model.log.clear();
     iss->step();
     rtl.step(we, wa, wd, ra);
-    const i8085::Step& s = iss->last();
-    const std::string line = i8085::trace_line(s, iss->regs());
-    auto sorted = [](std::vector<Access> v) {
-      std::stable_sort(v.begin(), v.end());
-      return v;
-    };
-    std::string what;
-    if (iss->tstates() != rtl.tstates) what = "cumulative T-states";
-    else if (!(iss->regs() == rtl.regs())) what = "registers";
-    else if (sorted(model.log) != sorted(rtl.log)) what = "memory / port writes";
-    else if (!(model.pulses == rtl.pulses)) what = "step pulses";
-    else if (!we && rtl.host_rdata != expect_host) what = "host read of the mailbox";
+    const std::string line = i8085::trace_line(iss->last(), iss->regs());
+    const std::string what = first_difference(*iss, model, rtl, we, expect_host);
     if (!what.empty()) {
       std::string ctx;
       for (const auto& c : context) ctx += "    " + c + "\n";
@@ -210,7 +208,7 @@ TEST(Board, CommandPulsesStepsMailboxAndDoneInLockstep) {
     if (context.size() > 8) context.pop_front();
   }
   // What the program must have done, from its source and the board map.
-  EXPECT_EQ(pulses_sent, 7);
+  EXPECT_EQ(host.pulses_sent, 7);
   EXPECT_EQ(rtl.pulses.pos[0], 7);  // X+ every pulse
   EXPECT_EQ(rtl.pulses.neg[1], 7);  // Y- every pulse
   EXPECT_EQ(rtl.pulses.pos[1] + rtl.pulses.neg[0] + rtl.pulses.pos[2] + rtl.pulses.neg[2], 0);

@@ -16,9 +16,9 @@
 
 #include "Vinterp_top.h"
 #include "core_harness.hpp"
+#include "harness.hpp"
 #include "interp/engine.hpp"
 #include "interp_regs.h"
-#include "verilated_fst_c.h"
 
 namespace contour {
 namespace {
@@ -77,50 +77,11 @@ class AxisMonitor {
   bool have_fall_ = false, have_dir_change_ = false;
 };
 
-class TopHarness {
+class TopHarness : public tb::Harness<Vinterp_top> {
  public:
-  TopHarness() : ctx_(std::make_unique<VerilatedContext>()), mx_(Axis::X, &timing), my_(Axis::Y, &timing) {
-    const char* fst = std::getenv("CONTOUR_FST");
-    if (fst) ctx_->traceEverOn(true);
-    top_ = std::make_unique<Vinterp_top>(ctx_.get());
-    if (fst) {
-      trace_ = std::make_unique<VerilatedFstC>();
-      top_->trace(trace_.get(), 99);
-      trace_->open(fst);
-    }
-    top_->i_rst = 1;
+  TopHarness() : mx_(Axis::X, &timing), my_(Axis::Y, &timing) {
+    hold_reset(2);
     tick();
-    tick();
-    top_->i_rst = 0;
-    tick();
-  }
-  ~TopHarness() {
-    close_trace();
-    top_->final();
-  }
-
-  Vinterp_top& top() { return *top_; }
-  std::uint64_t cycle() const { return cycle_; }
-
-  void tick() {
-    top_->i_clk = 0;
-    top_->eval();
-    dump();
-    top_->i_clk = 1;
-    top_->eval();
-    dump();
-    ++cycle_;
-    mx_.sample(cycle_, top_->o_step_x, top_->o_dir_x, errors);
-    my_.sample(cycle_, top_->o_step_y, top_->o_dir_y, errors);
-    if (top_->o_pulse) ++core_pulses;
-    if (top_->o_busy) ++busy_cycles;
-  }
-
-  void close_trace() {
-    if (trace_) {
-      trace_->close();
-      trace_.reset();
-    }
   }
 
   // Wishbone B4 classic single accesses; fail after 8 clocks without ACK.
@@ -203,15 +164,16 @@ class TopHarness {
   std::uint64_t core_pulses = 0, busy_cycles = 0;
 
  private:
-  void dump() {
-    if (trace_) trace_->dump(static_cast<std::uint64_t>(ctx_->time()));
-    ctx_->timeInc(1);
+  // Every clock: the pins through the timing monitors, the core's counts.
+  void after_clock() override {
+    mx_.sample(clocks(), top_->o_step_x, top_->o_dir_x, errors);
+    my_.sample(clocks(), top_->o_step_y, top_->o_dir_y, errors);
+    if (top_->o_pulse) ++core_pulses;
+    if (top_->o_busy) ++busy_cycles;
   }
-  std::unique_ptr<VerilatedContext> ctx_;
-  std::unique_ptr<Vinterp_top> top_;
-  std::unique_ptr<VerilatedFstC> trace_;
+
+  Vinterp_top* const top_ = &top();
   AxisMonitor mx_, my_;
-  std::uint64_t cycle_ = 0;
 };
 
 std::vector<Pulse> model_pulses(const std::vector<Move>& moves) {

@@ -1,5 +1,5 @@
 // Regression of rtl/interp3/interp3_core against the golden model
-// Linear3<W> (docs/algorithm-3axis.md): pulse by pulse and state by state.
+// Linear3<W> (docs/algorithm.md, "Linear on three axes"): pulse by pulse and state by state.
 //
 //   W = 4:  every end point of the cube |XE|, |YE|, |ZE| <= 15 (29,791
 //           moves), command held high; the invariants of the contract
