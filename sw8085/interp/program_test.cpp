@@ -5,66 +5,44 @@
 #include <cstdlib>
 
 #include "interp/engine.hpp"
+#include "sw8085/interp/expect_model.hpp"
 #include "sw8085/interp/host.hpp"
 
 namespace contour::sw8085 {
 namespace {
 
-void expect_same(const Move& m, const RunResult& got, const RunResult& want) {
-  ASSERT_EQ(got.initial_state, want.initial_state) << describe(m) << " initial state";
-  ASSERT_EQ(got.steps.size(), want.steps.size()) << describe(m);
-  for (std::size_t i = 0; i < want.steps.size(); ++i) {
-    ASSERT_EQ(got.steps[i].pulse, want.steps[i].pulse) << describe(m) << " pulse " << i + 1;
-    ASSERT_EQ(got.steps[i].state, want.steps[i].state)
-        << describe(m) << " state after pulse " << i + 1 << ": got " << to_string(got.steps[i].state) << ", want "
-        << to_string(want.steps[i].state);
-  }
-  ASSERT_EQ(got.final_state, want.final_state) << describe(m);
-}
-
 TEST(Program, PaperFig2Line) {
   Host h;
   const Move m = Move::line(6, 5);
-  {
-        const RunResult want = run_model<24>(m);
-        expect_same(m, h.run(m, nullptr, want.steps.size() + 1), want);
-      }
+  expect_model_run(h, m);
 }
 
 TEST(Program, PaperFig5Arc) {
   Host h;
   const Move m = Move::arc(6, 0, 0, 6, Sense::CCW);
-  {
-        const RunResult want = run_model<24>(m);
-        expect_same(m, h.run(m, nullptr, want.steps.size() + 1), want);
-      }
+  expect_model_run(h, m);
 }
 
-}  // namespace
-}  // namespace contour::sw8085
+// CONTOUR_FULL=1 (set, not empty, not 0): the long runs.
+bool full_run() {
+  const char* e = std::getenv("CONTOUR_FULL");
+  return e != nullptr && *e != '\0' && *e != '0';
+}
 
-namespace contour::sw8085 {
-namespace {
-
-bool full_run() { return std::getenv("SW8085_FULL") != nullptr; }
-
-// Every line with |XE|, |YE| <= N (N = 16, 40 with SW8085_FULL=1).
+// Every line with |XE|, |YE| <= N (N = 16, 40 with CONTOUR_FULL=1).
 TEST(Program, AllSmallLines) {
   Host h;
   const int n = full_run() ? 40 : 16;
   for (int xe = -n; xe <= n; ++xe)
     for (int ye = -n; ye <= n; ++ye) {
       const Move m = Move::line(xe, ye);
-      {
-        const RunResult want = run_model<24>(m);
-        expect_same(m, h.run(m, nullptr, want.steps.size() + 1), want);
-      }
+      expect_model_run(h, m);
       if (HasFatalFailure()) return;
     }
 }
 
 // Every accepted arc between points with |coordinates| <= N, both senses
-// (N = 6, 9 with SW8085_FULL=1): quadrant crossings, full circles, the end
+// (N = 6, 9 with CONTOUR_FULL=1): quadrant crossings, full circles, the end
 // rule in every quadrant.
 TEST(Program, AllSmallArcs) {
   Host h;
@@ -81,10 +59,7 @@ TEST(Program, AllSmallArcs) {
             } catch (const InputError&) {
               continue;
             }
-            {
-        const RunResult want = run_model<24>(m);
-        expect_same(m, h.run(m, nullptr, want.steps.size() + 1), want);
-      }
+            expect_model_run(h, m);
             if (HasFatalFailure()) return;
             ++runs;
           }

@@ -7,10 +7,17 @@
 #include "interp/circular.hpp"
 #include "interp/engine.hpp"
 #include "interp/linear.hpp"
+#include "sw8085/interp/expect_model.hpp"
 #include "sw8085/interp/host.hpp"
 
 namespace contour::sw8085 {
 namespace {
+
+// CONTOUR_FULL=1 (set, not empty, not 0): the long runs.
+bool full_run() {
+  const char* e = std::getenv("CONTOUR_FULL");
+  return e != nullptr && *e != '\0' && *e != '0';
+}
 
 constexpr std::int64_t kMax = (std::int64_t{1} << 24) - 1;
 
@@ -40,7 +47,7 @@ TEST(Random24, LinePrefixesIncludingExtremes) {
   }
   std::mt19937_64 rng(6);
   std::uniform_int_distribution<std::int64_t> c(-kMax, kMax);
-  const int n = std::getenv("SW8085_FULL") ? 200 : 20;
+  const int n = full_run() ? 200 : 20;
   for (int i = 0; i < n; ++i) {
     expect_line_prefix(c(rng), c(rng), 700);
     if (HasFatalFailure()) return;
@@ -77,14 +84,7 @@ Move short_arc(std::int64_t xs, std::int64_t ys, Sense s, int n) {
 
 void expect_arc(const Move& m) {
   Host h;
-  const RunResult want = run_model<24>(m), got = h.run(m, nullptr, want.steps.size() + 1);
-  ASSERT_EQ(got.steps.size(), want.steps.size()) << describe(m);
-  for (std::size_t i = 0; i < want.steps.size(); ++i) {
-    ASSERT_EQ(got.steps[i].pulse, want.steps[i].pulse) << describe(m) << " pulse " << i + 1;
-    ASSERT_EQ(got.steps[i].state, want.steps[i].state)
-        << describe(m) << " after pulse " << i + 1 << ": got " << to_string(got.steps[i].state) << ", want "
-        << to_string(want.steps[i].state);
-  }
+  expect_model_run(h, m);
 }
 
 TEST(Random24, ShortArcsOnLargeCirclesIncludingAxisCrossings) {
@@ -100,7 +100,7 @@ TEST(Random24, ShortArcsOnLargeCirclesIncludingAxisCrossings) {
   }
   std::mt19937_64 rng(85);
   std::uniform_int_distribution<std::int64_t> c(-kMax, kMax);
-  const int n = std::getenv("SW8085_FULL") ? 200 : 20;
+  const int n = full_run() ? 200 : 20;
   for (int i = 0; i < n; ++i) {
     const std::int64_t xs = c(rng), ys = c(rng);
     if (xs * xs + ys * ys > kMax * kMax || xs * xs + ys * ys < 2) continue;

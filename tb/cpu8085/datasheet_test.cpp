@@ -7,6 +7,7 @@
 
 #include "i8085/system.hpp"
 #include "cpu_machine.hpp"
+#include "debug_ports.hpp"
 
 namespace {
 

@@ -80,7 +80,6 @@ class Lockstep {
   bool ie() const { return iss_->ie(); }
   const i8085::Step& last() const { return iss_->last(); }
   i8085::Regs regs() const { return iss_->regs(); }
-  const std::vector<Access>& last_writes() const { return iss_bus_.log; }
   const std::string& report() const { return report_; }
   std::uint8_t mem(std::uint16_t a) const { return iss_bus_.mem[a]; }
   // Changes one byte on one side only: for testing the divergence report.

@@ -1,8 +1,8 @@
 // Lockstep regression: the Verilated cpu8085 against the ISS (lockstep.hpp).
 //
-// CPU8085_LOCKSTEP_SCALE=N multiplies the random runs (default 1, about a
-// minute in all on one core); CPU8085_FST=path writes the waveform of the
-// random run with seed 1.
+// CONTOUR_FULL=1 runs the random streams ten times as long (default: about
+// a minute in all on one core); CONTOUR_FST=FILE writes the waveform of the
+// last run (use with --gtest_filter).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,12 +20,14 @@
 namespace cpu8085::tb {
 namespace {
 
-std::uint64_t scale() {
-  const char* s = std::getenv("CPU8085_LOCKSTEP_SCALE");
-  if (s == nullptr) return 1;
-  const long v = std::atol(s);
-  return v > 0 ? static_cast<std::uint64_t>(v) : 1;
+// CONTOUR_FULL=1 (set, not empty, not 0): the long runs.
+bool full_run() {
+  const char* e = std::getenv("CONTOUR_FULL");
+  return e != nullptr && *e != '\0' && *e != '0';
 }
+
+// The random runs: ten times as long with CONTOUR_FULL=1.
+std::uint64_t scale() { return full_run() ? 10 : 1; }
 
 // The harness itself: a byte that differs on the RTL side must stop the run
 // at the step that reads it, naming what differs, with both trace lines.

@@ -27,7 +27,8 @@ using tb::lockstep;
 using H8 = CoreHarness<Vinterp_w8, 8>;
 using H24 = CoreHarness<Vinterp_w24, 24>;
 
-bool full_sweep() {
+// CONTOUR_FULL=1 (set, not empty, not 0): the long runs.
+bool full_run() {
   const char* e = std::getenv("CONTOUR_FULL");
   return e != nullptr && *e != '\0' && *e != '0';
 }
@@ -157,7 +158,7 @@ std::vector<std::pair<std::int64_t, std::int64_t>> rounded_points(std::int64_t r
 TEST(InterpCoreW8, ArcsEveryRadiusBothSenses) {
   H8 h;
   constexpr std::int64_t M = Circular<8>::kMax;
-  const std::size_t stride = full_sweep() ? 1 : 23;
+  const std::size_t stride = full_run() ? 1 : 23;
   std::vector<Move> moves;
   std::size_t rejected = 0;
   for (std::int64_t r = 2; r <= M; ++r) {

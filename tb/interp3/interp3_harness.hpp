@@ -18,17 +18,12 @@ namespace contour::rtl3 {
 template <class V, unsigned W>
 class Interp3Harness : public tb::Harness<V> {
  public:
-  static constexpr unsigned kWidth = W;
   using tb::Harness<V>::top;
   using tb::Harness<V>::tick;
 
-  explicit Interp3Harness(std::string fst_path = "") : tb::Harness<V>(std::move(fst_path)) {
-    top().i_load = 0;
-    top().i_cmd = 0;
-    this->hold_reset(1);
-  }
+  // Constructed in reset: one reset clock with no load and no command.
+  explicit Interp3Harness(std::string fst_path = "") : tb::Harness<V>(std::move(fst_path)) { reset(); }
 
-  // A synchronous reset clock.
   void reset() {
     top().i_load = 0;
     top().i_cmd = 0;
