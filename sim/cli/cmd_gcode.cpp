@@ -198,7 +198,7 @@ int write_svgs(const std::string& dir, const std::string& file, const planner::P
   return files;
 }
 
-int run(const std::vector<std::string>& argv) {
+int run_gcode_command(const std::vector<std::string>& argv) {
   const Args a(argv, {"pulses"},
                {"format", "accel", "cycle", "tol", "chord", "config", "csv", "svg", "steps-per-mm", "engine"});
   if (a.help()) {
@@ -335,7 +335,8 @@ int run(const std::vector<std::string>& argv) {
   return all_ok ? 0 : 1;
 }
 
-const CommandRegistrar kRegistrar{Command{"gcode", "paper B: plan and chord-interpolate a G-code program", run}};
+const CommandRegistrar kRegistrar{
+    Command{"gcode", "paper B: plan and chord-interpolate a G-code program", run_gcode_command}};
 
 }  // namespace
 }  // namespace contour::cli

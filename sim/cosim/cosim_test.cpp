@@ -179,7 +179,7 @@ std::vector<ChildRow> run_child(Options opt) {
     std::ostringstream o;
     int code = 0;
     try {
-      const Outcome out = run_cosim(opt);
+      const CosimOutcome out = run_cosim(opt);
       for (const auto& r : out.rows)
         o << r.case_name << '\t' << r.engine << '\t' << r.rate_pps << '\t' << r.verdict << '\t' << r.pulses << '\t'
           << r.lost << '\t' << r.overruns << '\t' << r.mismatches << '\t'

@@ -4,14 +4,17 @@
 // before a train and end_case() after it, from its own thread; both may
 // wait() (bus accesses, reset).
 //
-//   model   the golden model (model/interp), one step per rising edge
-//   rtl     interp_top (rtl/interp) Verilated for SystemC, 50 MHz, command
-//           on its pin, moves pushed over Wishbone, step/dir pins observed
-//   iss     the 8085 program (sw8085/interp) on the C++ ISS, T-state timed
-//           at 3 MHz, command on RST 7.5 (sw8085::Host does the board)
-//   8085    board8085 (rtl/board8085 + rtl/cpu8085) Verilated for SystemC,
-//           3 MHz, command on RST 7.5 (synchronised), moves written through
-//           the mailbox port, step pins observed
+//   model   ModelCosimEngine: the golden model (model/interp) in an
+//           SC_MODULE, one step per rising edge
+//   rtl     CoreCosimEngine: interp_top (rtl/interp) Verilated for SystemC,
+//           50 MHz, command on its pin, moves pushed over Wishbone, step/dir
+//           pins observed
+//   iss     IssCosimEngine: the 8085 program (sw8085/interp) on the C++ ISS,
+//           T-state timed at 3 MHz, command on RST 7.5 (sw8085::Host does the
+//           board)
+//   8085    BoardCosimEngine: board8085 (rtl/board8085 + rtl/cpu8085)
+//           Verilated for SystemC, 3 MHz, command on RST 7.5 (synchronised),
+//           moves written through the mailbox port, step pins observed
 #pragma once
 
 #include <systemc>
@@ -112,10 +115,10 @@ class CosimEngine : public sc_core::sc_module {
 
 // --- model -----------------------------------------------------------------
 
-class ModelEngine final : public CosimEngine {
+class ModelCosimEngine final : public CosimEngine {
  public:
-  SC_HAS_PROCESS(ModelEngine);
-  explicit ModelEngine(sc_core::sc_module_name n);
+  SC_HAS_PROCESS(ModelCosimEngine);
+  explicit ModelCosimEngine(sc_core::sc_module_name n);
   std::string engine() const override { return "model"; }
   void begin_case(const Case& c) override;
   void end_case(EngineRun& run) override;
@@ -138,11 +141,11 @@ struct StepTiming {
   std::uint32_t len = 50, space = 50, setup = 10, hold = 10;  // 1 us / 1 us / 200 ns / 200 ns at 50 MHz
 };
 
-class CoreEngine final : public CosimEngine {
+class CoreCosimEngine final : public CosimEngine {
  public:
-  SC_HAS_PROCESS(CoreEngine);
-  CoreEngine(sc_core::sc_module_name n, double f_clk_hz, StepTiming timing, bool free_clock);
-  ~CoreEngine() override;
+  SC_HAS_PROCESS(CoreCosimEngine);
+  CoreCosimEngine(sc_core::sc_module_name n, double f_clk_hz, StepTiming timing, bool free_clock);
+  ~CoreCosimEngine() override;
   std::string engine() const override { return "rtl"; }
   void begin_case(const Case& c) override;
   void end_case(EngineRun& run) override;
@@ -178,11 +181,11 @@ class CoreEngine final : public CosimEngine {
 
 // --- iss: the program on the C++ ISS ----------------------------------------
 
-class IssEngine final : public CosimEngine {
+class IssCosimEngine final : public CosimEngine {
  public:
-  SC_HAS_PROCESS(IssEngine);
-  IssEngine(sc_core::sc_module_name n, double f_clk_hz);
-  ~IssEngine() override;
+  SC_HAS_PROCESS(IssCosimEngine);
+  IssCosimEngine(sc_core::sc_module_name n, double f_clk_hz);
+  ~IssCosimEngine() override;
   std::string engine() const override { return "iss"; }
   void begin_case(const Case& c) override;
   void end_case(EngineRun& run) override;
@@ -210,11 +213,11 @@ class IssEngine final : public CosimEngine {
 
 // --- 8085: board8085 ---------------------------------------------------------
 
-class BoardEngine final : public CosimEngine {
+class BoardCosimEngine final : public CosimEngine {
  public:
-  SC_HAS_PROCESS(BoardEngine);
-  BoardEngine(sc_core::sc_module_name n, double f_clk_hz, const std::string& rom_memh);
-  ~BoardEngine() override;
+  SC_HAS_PROCESS(BoardCosimEngine);
+  BoardCosimEngine(sc_core::sc_module_name n, double f_clk_hz, const std::string& rom_memh);
+  ~BoardCosimEngine() override;
   std::string engine() const override { return "8085"; }
   void begin_case(const Case& c) override;
   void end_case(EngineRun& run) override;

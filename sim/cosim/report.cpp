@@ -209,7 +209,7 @@ std::string cell_text(const Row& r) {
 
 std::string verdict_line(const std::vector<Row>& rows) {
   std::size_t pass = 0, fail = 0;
-  for (const auto& r : rows) (r.passed() ? pass : fail)++;
+  for (const auto& r : rows) (r.acceptable() ? pass : fail)++;
   const double pct = rows.empty() ? 0.0 : 100.0 * double(pass) / double(rows.size());
   return fmt("%.2f%%", pct) + (fail == 0 && pass > 0 ? " PASS " : " FAIL ") + std::to_string(pass) + " PASSED, " +
          std::to_string(fail) + " FAILED";
@@ -247,7 +247,7 @@ std::vector<std::string> write_reports(const std::string& dir, const ReportInput
   {
     std::ostringstream j;
     std::size_t pass = 0, fail = 0;
-    for (const auto& r : in.rows) (r.passed() ? pass : fail)++;
+    for (const auto& r : in.rows) (r.acceptable() ? pass : fail)++;
     j << "{\n  \"verdict\": " << json_str(verdict) << ",\n  \"suite\": " << json_str(in.suite)
       << ",\n  \"passed\": " << pass << ",\n  \"failed\": " << fail << ",\n  \"command\": " << json_str(in.command)
       << ",\n  \"sim_seconds\": " << fmt("%.6f", in.sim_seconds) << ",\n  \"results\": [\n";
@@ -293,14 +293,14 @@ std::vector<std::string> write_reports(const std::string& dir, const ReportInput
   {
     std::ostringstream x;
     std::size_t fail = 0;
-    for (const auto& r : in.rows) fail += !r.passed();
+    for (const auto& r : in.rows) fail += !r.acceptable();
     x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"contour cosim\" tests=\"" << in.rows.size()
       << "\" failures=\"" << fail << "\">\n  <testsuite name=\"cosim." << xml_attr(in.suite) << "\" tests=\""
       << in.rows.size() << "\" failures=\"" << fail << "\" time=\"" << fmt("%.3f", in.wall_seconds) << "\">\n";
     for (const auto& r : in.rows) {
       x << "    <testcase classname=\"cosim." << xml_attr(in.suite + "." + r.case_name) << "\" name=\""
         << xml_attr(r.engine + "@" + rate_label(r.rate_pps)) << "\"";
-      if (r.passed()) {
+      if (r.acceptable()) {
         x << ">";
         if (!r.note.empty()) x << "<system-out>" << escape(r.note) << "</system-out>";
         x << "</testcase>\n";
@@ -368,7 +368,7 @@ std::vector<std::string> write_reports(const std::string& dir, const ReportInput
   // Failures.
   std::vector<const Row*> failed;
   for (const auto& r : in.rows)
-    if (!r.passed()) failed.push_back(&r);
+    if (!r.acceptable()) failed.push_back(&r);
   h << "<h2>Failures (" << failed.size() << ")</h2>\n";
   if (failed.empty()) h << "<p>None.</p>\n";
   for (const Row* r : failed) {

@@ -11,20 +11,20 @@ namespace contour::test {
 namespace {
 
 TEST(Cli, PaperFig2LineSixFive) {
-  const Outcome o = contour("line 6 5 --format steps");
+  const ProcessResult o = contour("line 6 5 --format steps");
   EXPECT_EQ(o.status, 0);
   EXPECT_EQ(o.out, "+X +Y +X +Y +X +Y +X +Y +X +Y +X\n");
   EXPECT_EQ(o.err, "");
 }
 
 TEST(Cli, PaperFig5ArcCcw) {
-  const Outcome o = contour("arc 6 0 0 6 --ccw --format steps");
+  const ProcessResult o = contour("arc 6 0 0 6 --ccw --format steps");
   EXPECT_EQ(o.status, 0);
   EXPECT_EQ(o.out, "-X +Y +Y +Y +Y -X +Y -X +Y -X -X -X\n");
 }
 
 TEST(Cli, SummaryNamesPulsesEndAndDeviation) {
-  const Outcome o = contour("arc 6 0 0 6 --ccw");
+  const ProcessResult o = contour("arc 6 0 0 6 --ccw");
   EXPECT_EQ(o.status, 0);
   EXPECT_NE(o.out.find("pulses:        12 (X 6, Y 6)"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("end point:     (0, 6)"), std::string::npos) << o.out;
@@ -32,7 +32,7 @@ TEST(Cli, SummaryNamesPulsesEndAndDeviation) {
 }
 
 TEST(Cli, JsonCarriesPulsesAndFinalState) {
-  const Outcome o = contour("line -3 2 --format json");
+  const ProcessResult o = contour("line -3 2 --format json");
   EXPECT_EQ(o.status, 0);
   EXPECT_NE(o.out.find("\"count\": 5"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("\"pulses\": [\"-X\", \"+Y\", \"-X\", \"+Y\", \"-X\"]"), std::string::npos) << o.out;
@@ -42,7 +42,7 @@ TEST(Cli, JsonCarriesPulsesAndFinalState) {
 
 TEST(Cli, SvgDrawsThePathAndTheIdealContour) {
   const std::string path = ::testing::TempDir() + "fig5.svg";
-  const Outcome o = contour("arc 6 0 0 6 --ccw --format svg -o " + path);
+  const ProcessResult o = contour("arc 6 0 0 6 --ccw --format svg -o " + path);
   ASSERT_EQ(o.status, 0) << o.err;
   std::ifstream f(path);
   std::stringstream s;
@@ -68,7 +68,7 @@ struct BadInput {
 class CliErrors : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(CliErrors, OneLineOnStderrAndExitTwo) {
-  const Outcome o = contour(GetParam().args);
+  const ProcessResult o = contour(GetParam().args);
   EXPECT_EQ(o.status, 2) << GetParam().args;
   EXPECT_EQ(o.out, "");
   EXPECT_NE(o.err.find(GetParam().message), std::string::npos) << o.err;
@@ -102,11 +102,11 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 TEST(Cli, HelpListsCommandsAndEngines) {
-  const Outcome top = contour("--help");
+  const ProcessResult top = contour("--help");
   EXPECT_EQ(top.status, 0);
   EXPECT_NE(top.out.find("line"), std::string::npos);
   EXPECT_NE(top.out.find("arc"), std::string::npos);
-  const Outcome arc = contour("arc --help");
+  const ProcessResult arc = contour("arc --help");
   EXPECT_EQ(arc.status, 0);
   EXPECT_NE(arc.out.find("--engine E"), std::string::npos);
   EXPECT_NE(arc.out.find("model"), std::string::npos);
