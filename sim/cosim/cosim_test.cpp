@@ -32,6 +32,10 @@ int sc_main(int argc, char** argv) {
 }
 
 namespace contour::cosim {
+
+// gtest prints a Verdict as its word.
+void PrintTo(Verdict v, std::ostream* os) { *os << to_string(v); }
+
 namespace {
 
 const char* kFig2 = "+X +Y +X +Y +X +Y +X +Y +X +Y +X";
@@ -72,7 +76,7 @@ TEST(Scoreboard, TheSuitesPaperCasesAreThePapersFigures) {
 TEST(Scoreboard, IdenticalStreamPasses) {
   const auto exp = expect(fig2());
   const Row r = judge(fig2(), exp, 4e3, commands(11), run_of("iss", pulses(kFig2), 0));
-  EXPECT_EQ(r.verdict, "PASS") << r.note;
+  EXPECT_EQ(r.verdict, Verdict::Pass) << r.note;
   EXPECT_EQ(r.lost, 0u);
   EXPECT_TRUE(r.latency_exact);
   EXPECT_NEAR(r.lat_min_us, 1.0, 1e-9);
@@ -82,7 +86,7 @@ TEST(Scoreboard, DroppedPulseIsTheFirstDivergence) {
   auto ps = pulses(kFig2);
   ps.erase(ps.begin() + 6);  // pulse 7 (+X) missing: the engine's 7th is +Y
   const Row r = judge(fig2(), expect(fig2()), 4e3, commands(11), run_of("rtl", ps, 1));
-  EXPECT_EQ(r.verdict, "FAIL");
+  EXPECT_EQ(r.verdict, Verdict::Fail);
   ASSERT_TRUE(r.divergence);
   EXPECT_EQ(r.divergence->index, 7u);
   EXPECT_EQ(r.divergence->summary, "pulse 7: model +X, rtl +Y");
@@ -93,7 +97,7 @@ TEST(Scoreboard, SwappedPulsesAreCaught) {
   auto ps = pulses(kFig5);
   std::swap(ps[4], ps[5]);  // +Y -X becomes -X +Y at pulses 5, 6
   const Row r = judge(fig5(), expect(fig5()), 1e3, commands(12), run_of("8085", ps, 0));
-  EXPECT_EQ(r.verdict, "FAIL");
+  EXPECT_EQ(r.verdict, Verdict::Fail);
   ASSERT_TRUE(r.divergence);
   EXPECT_EQ(r.divergence->summary, "pulse 5: model +Y, 8085 -X");
   EXPECT_EQ(r.mismatches, 2u);
@@ -103,7 +107,7 @@ TEST(Scoreboard, ExtraPulseIsAMismatch) {
   auto ps = pulses(kFig2);
   ps.push_back(Pulse{Axis::X, 1});
   const Row r = judge(fig2(), expect(fig2()), 1e3, commands(11), run_of("iss", ps, 0));
-  EXPECT_EQ(r.verdict, "FAIL");
+  EXPECT_EQ(r.verdict, Verdict::Fail);
   ASSERT_TRUE(r.divergence);
   EXPECT_EQ(r.divergence->index, 12u);
 }
@@ -112,20 +116,20 @@ TEST(Scoreboard, LossesFlaggedOneForOneAreFlaggedNotFailed) {
   auto ps = pulses(kFig2);
   ps.resize(8);  // a prefix: 3 command pulses gave nothing
   const Row ok = judge(fig2(), expect(fig2()), 50e3, commands(11), run_of("8085", ps, 3));
-  EXPECT_EQ(ok.verdict, "FLAGGED") << ok.note;
+  EXPECT_EQ(ok.verdict, Verdict::Flagged) << ok.note;
   EXPECT_EQ(ok.lost, 3u);
   const Row under = judge(fig2(), expect(fig2()), 50e3, commands(11), run_of("8085", ps, 2));
-  EXPECT_EQ(under.verdict, "FAIL");
+  EXPECT_EQ(under.verdict, Verdict::Fail);
   const Row over = judge(fig2(), expect(fig2()), 50e3, commands(11), run_of("8085", pulses(kFig2), 1));
-  EXPECT_EQ(over.verdict, "FAIL");
+  EXPECT_EQ(over.verdict, Verdict::Fail);
 }
 
 TEST(Scoreboard, TheCoreMayNotLoseUpTo250kppsEvenIfFlagged) {
   auto ps = pulses(kFig2);
   ps.resize(10);
-  EXPECT_EQ(judge(fig2(), expect(fig2()), 250e3, commands(11), run_of("rtl", ps, 1)).verdict, "FAIL");
-  EXPECT_EQ(judge(fig2(), expect(fig2()), 500e3, commands(11), run_of("rtl", ps, 1)).verdict, "FLAGGED");
-  EXPECT_EQ(judge(fig2(), expect(fig2()), 1e3, commands(11), run_of("iss", ps, 1)).verdict, "FAIL");
+  EXPECT_EQ(judge(fig2(), expect(fig2()), 250e3, commands(11), run_of("rtl", ps, 1)).verdict, Verdict::Fail);
+  EXPECT_EQ(judge(fig2(), expect(fig2()), 500e3, commands(11), run_of("rtl", ps, 1)).verdict, Verdict::Flagged);
+  EXPECT_EQ(judge(fig2(), expect(fig2()), 1e3, commands(11), run_of("iss", ps, 1)).verdict, Verdict::Fail);
 }
 
 TEST(Scoreboard, WrongFinalPositionFails) {
@@ -134,15 +138,15 @@ TEST(Scoreboard, WrongFinalPositionFails) {
   run.x = 6;
   run.y = 4;
   const Row r = judge(fig2(), expect(fig2()), 1e3, commands(11), run);
-  EXPECT_EQ(r.verdict, "FAIL");
+  EXPECT_EQ(r.verdict, Verdict::Fail);
   EXPECT_NE(r.note.find("final position (6, 4), model (6, 5)"), std::string::npos) << r.note;
 }
 
 TEST(Scoreboard, VerdictLine) {
   std::vector<Row> rows(40);
-  for (auto& r : rows) r.verdict = "PASS";
+  for (auto& r : rows) r.verdict = Verdict::Pass;
   EXPECT_EQ(verdict_line(rows), "100.00% PASS 40 PASSED, 0 FAILED");
-  rows[3].verdict = "FAIL";
+  rows[3].verdict = Verdict::Fail;
   EXPECT_EQ(verdict_line(rows), "97.50% FAIL 39 PASSED, 1 FAILED");
 }
 
@@ -181,8 +185,8 @@ std::vector<ChildRow> run_child(Options opt) {
     try {
       const CosimOutcome out = run_cosim(opt);
       for (const auto& r : out.rows)
-        o << r.case_name << '\t' << r.engine << '\t' << r.rate_pps << '\t' << r.verdict << '\t' << r.pulses << '\t'
-          << r.lost << '\t' << r.overruns << '\t' << r.mismatches << '\t'
+        o << r.case_name << '\t' << r.engine << '\t' << r.rate_pps << '\t' << to_string(r.verdict) << '\t'
+          << r.pulses << '\t' << r.lost << '\t' << r.overruns << '\t' << r.mismatches << '\t'
           << (r.divergence ? r.divergence->index : 0) << '\t'
           << (r.divergence ? r.divergence->summary : std::string("-")) << '\t'
           << (r.has_latency ? r.lat_min_us : -1) << '\t' << (r.has_latency ? r.lat_max_us : -1) << '\n';

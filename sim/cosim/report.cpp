@@ -199,7 +199,7 @@ pre{background:#f7f7f7;border:1px solid #ddd;padding:8px;font-size:12px;overflow
 }
 
 std::string cell_text(const Row& r) {
-  std::string t = r.verdict;
+  std::string t = to_string(r.verdict);
   if (r.lost > 0 || r.overruns > 0) t += " " + std::to_string(r.lost) + "/" + std::to_string(r.overruns);
   if (r.mismatches > 0) t += " &#8800;" + std::to_string(r.mismatches);
   return t;
@@ -256,7 +256,7 @@ std::vector<std::string> write_reports(const std::string& dir, const ReportInput
       j << "    {\"case\": " << json_str(r.case_name) << ", \"engine\": " << json_str(r.engine)
         << ", \"rate_pps\": " << fmt("%.0f", r.rate_pps) << ", \"pulses\": " << r.pulses
         << ", \"mismatches\": " << r.mismatches << ", \"lost\": " << r.lost << ", \"overruns\": " << r.overruns
-        << ", \"verdict\": " << json_str(r.verdict) << ", \"expected\": " << r.expected
+        << ", \"verdict\": " << json_str(to_string(r.verdict)) << ", \"expected\": " << r.expected
         << ", \"commands\": " << r.commands << ", \"required\": " << (r.required ? "true" : "false");
       if (r.has_latency)
         j << ", \"latency_us\": {\"min\": " << fmt("%.4f", r.lat_min_us) << ", \"mean\": " << fmt("%.4f", r.lat_mean_us)
@@ -399,7 +399,7 @@ std::vector<std::string> write_reports(const std::string& dir, const ReportInput
         }
         if (e == "rtl") lat[0] = found;
         if (e == "8085") lat[1] = found;
-        h << "<td class=\"" << found->verdict << "\" title=\"" << xml_attr(found->note) << "\">" << cell_text(*found)
+        h << "<td class=\"" << to_string(found->verdict) << "\" title=\"" << xml_attr(found->note) << "\">" << cell_text(*found)
           << "</td>";
       }
       for (const Row* r : lat) {
@@ -428,7 +428,7 @@ std::vector<std::string> write_reports(const std::string& dir, const ReportInput
     h << "<tr><td class=\"l\">" << escape(r.case_name) << "</td><td class=\"l\">" << escape(r.engine) << "</td><td>"
       << rate_label(r.rate_pps) << "</td><td>" << r.commands << "</td><td>" << r.pulses << "</td><td>" << r.mismatches
       << "</td><td>" << r.lost << "</td><td>" << (r.overruns < 0 ? std::string("-") : std::to_string(r.overruns))
-      << "</td><td class=\"" << r.verdict << "\">" << r.verdict << "</td><td class=\"l\">" << escape(r.note)
+      << "</td><td class=\"" << to_string(r.verdict) << "\">" << to_string(r.verdict) << "</td><td class=\"l\">" << escape(r.note)
       << "</td></tr>\n";
   h << "</table></details>\n<h2>Engines</h2><ul>";
   for (const auto& e : engines) h << "<li>" << escape(engine_title(e)) << "</li>";
