@@ -48,6 +48,25 @@ std::optional<std::pair<int, State>> current_move(std::span<const std::uint8_t, 
   return std::make_pair(pick, sw8085::decode(*queued[pick], mb, codes, n));
 }
 
+// The engine's position at the end of a case (absolute, on the case's
+// path), from the mailbox; a mailbox that does not decode is an error of the
+// run, and the position is then unknown.
+void read_final_position(std::span<const std::uint8_t, 256> mb, const sw8085::Codes& codes,
+                         const std::vector<std::unique_ptr<sw8085::SlotMove>>& queued,
+                         const std::array<int, 2>& slot_move, const std::vector<Placed>& moves, EngineRun& run) {
+  run.position_known = true;
+  run.x = run.y = 0;
+  try {
+    if (const auto cur = current_move(mb, codes, queued, slot_move)) {
+      run.x = moves[cur->first].origin_x + cur->second.x;
+      run.y = moves[cur->first].origin_y + cur->second.y;
+    }
+  } catch (const std::exception& e) {
+    run.position_known = false;
+    run.error += (run.error.empty() ? "" : "; ") + std::string("mailbox: ") + e.what();
+  }
+}
+
 }  // namespace
 
 // --- faults --------------------------------------------------------------------
@@ -144,6 +163,37 @@ void ModelCosimEngine::end_case(EngineRun& run) {
   run.overruns = 0;
 }
 
+// --- the Verilated engines ------------------------------------------------------------
+
+VerilatedCosimEngine::VerilatedCosimEngine(sc_core::sc_module_name n) : CosimEngine(n) {}
+
+VerilatedCosimEngine::~VerilatedCosimEngine() { close_trace(); }
+
+void VerilatedCosimEngine::open_trace(const std::string& path) {
+  trace_ = std::make_unique<VerilatedFstSc>();
+  trace_model(*trace_);
+  trace_->open(path.c_str());
+}
+
+void VerilatedCosimEngine::close_trace() {
+  if (trace_) trace_->close();
+  trace_.reset();
+}
+
+void VerilatedCosimEngine::watch_step_pins() {
+  SC_METHOD(on_step);
+  sensitive << step_x_ << step_y_;
+  dont_initialize();
+}
+
+void VerilatedCosimEngine::on_step() {
+  const bool x = step_x_.read(), y = step_y_.read();
+  if (x && !last_x_) emit(step_pulse(Axis::X, dir_x_.read()));
+  if (y && !last_y_) emit(step_pulse(Axis::Y, dir_y_.read()));
+  last_x_ = x;
+  last_y_ = y;
+}
+
 // --- rtl: interp_top -----------------------------------------------------------------
 
 namespace reg {
@@ -156,7 +206,7 @@ constexpr std::uint32_t kStatusBusy = 1, kStatusFull = 4, kStatusReject = 16;
 }  // namespace reg
 
 CoreCosimEngine::CoreCosimEngine(sc_core::sc_module_name n, double f_clk_hz, StepTiming timing, bool free_clock)
-    : CosimEngine(n),
+    : VerilatedCosimEngine(n),
       period_(sc_time::from_value(static_cast<sc_dt::uint64>(1e12 / f_clk_hz + 0.5))),
       timing_(timing),
       free_clock_(free_clock) {
@@ -186,23 +236,12 @@ CoreCosimEngine::CoreCosimEngine(sc_core::sc_module_name n, double f_clk_hz, Ste
   SC_METHOD(on_cmd);
   sensitive << i_cmd.pos();
   dont_initialize();
-  SC_METHOD(on_step);
-  sensitive << step_x_ << step_y_;
-  dont_initialize();
+  watch_step_pins();
 }
 
 CoreCosimEngine::~CoreCosimEngine() { close_trace(); }
 
-void CoreCosimEngine::open_trace(const std::string& path) {
-  trace_ = std::make_unique<VerilatedFstSc>();
-  top_->trace(trace_.get(), 99);
-  trace_->open(path.c_str());
-}
-
-void CoreCosimEngine::close_trace() {
-  if (trace_) trace_->close();
-  trace_.reset();
-}
+void CoreCosimEngine::trace_model(VerilatedFstSc& fst) { top_->trace(&fst, 99); }
 
 void CoreCosimEngine::keep_awake(std::uint64_t cycles) {
   const sc_time until = sc_time_stamp() + period_ * static_cast<double>(cycles);
@@ -228,14 +267,6 @@ void CoreCosimEngine::clock_thread() {
 }
 
 void CoreCosimEngine::on_cmd() { keep_awake(awake_cycles_); }
-
-void CoreCosimEngine::on_step() {
-  const bool x = step_x_.read(), y = step_y_.read();
-  if (x && !last_x_) emit(step_pulse(Axis::X, dir_x_.read()));
-  if (y && !last_y_) emit(step_pulse(Axis::Y, dir_y_.read()));
-  last_x_ = x;
-  last_y_ = y;
-}
 
 void CoreCosimEngine::wb_cycle(bool we, std::uint32_t adr, std::uint32_t v, std::uint32_t* out) {
   keep_awake(64);
@@ -428,17 +459,7 @@ void IssCosimEngine::end_case(EngineRun& run) {
   run.error = error_;
   run.overruns_known = true;
   run.overruns = host_->overruns();
-  run.position_known = true;
-  run.x = run.y = 0;
-  try {
-    if (const auto cur = current_move(mailbox(), host_->codes(), queued_, slot_move_)) {
-      run.x = moves_[cur->first].origin_x + cur->second.x;
-      run.y = moves_[cur->first].origin_y + cur->second.y;
-    }
-  } catch (const std::exception& e) {
-    run.position_known = false;
-    run.error += (run.error.empty() ? "" : "; ") + std::string("mailbox: ") + e.what();
-  }
+  read_final_position(mailbox(), host_->codes(), queued_, slot_move_, moves_, run);
 }
 
 // --- 8085: board8085 --------------------------------------------------------------
@@ -456,7 +477,7 @@ void write_rom_memh(const std::string& path) {
 }
 
 BoardCosimEngine::BoardCosimEngine(sc_core::sc_module_name n, double f_clk_hz, const std::string& rom_memh)
-    : CosimEngine(n),
+    : VerilatedCosimEngine(n),
       clk_("clk", sc_time::from_value(static_cast<sc_dt::uint64>(1e12 / f_clk_hz + 0.5))),
       codes_(std::make_unique<sw8085::Codes>(sw8085::Codes::from_symbols(sw8085::Program::builtin().symbols))) {
   const std::string plus = "+rom=" + rom_memh;
@@ -504,35 +525,16 @@ BoardCosimEngine::BoardCosimEngine(sc_core::sc_module_name n, double f_clk_hz, c
   SC_METHOD(on_clk);
   sensitive << clk_.posedge_event();
   dont_initialize();
-  SC_METHOD(on_step);
-  sensitive << step_x_ << step_y_;
-  dont_initialize();
+  watch_step_pins();
 }
 
 BoardCosimEngine::~BoardCosimEngine() { close_trace(); }
 
-void BoardCosimEngine::open_trace(const std::string& path) {
-  trace_ = std::make_unique<VerilatedFstSc>();
-  top_->trace(trace_.get(), 99);
-  trace_->open(path.c_str());
-}
-
-void BoardCosimEngine::close_trace() {
-  if (trace_) trace_->close();
-  trace_.reset();
-}
+void BoardCosimEngine::trace_model(VerilatedFstSc& fst) { top_->trace(&fst, 99); }
 
 // The command input, registered into the board's clock domain (the board
 // wants it synchronous: it drives RST 7.5 and the edge counter).
 void BoardCosimEngine::on_clk() { cmd_sync_.write(i_cmd.read()); }
-
-void BoardCosimEngine::on_step() {
-  const bool x = step_x_.read(), y = step_y_.read();
-  if (x && !last_x_) emit(step_pulse(Axis::X, dir_x_.read()));
-  if (y && !last_y_) emit(step_pulse(Axis::Y, dir_y_.read()));
-  last_x_ = x;
-  last_y_ = y;
-}
 
 void BoardCosimEngine::poke(std::uint8_t addr, std::uint8_t v) {
   sc_core::wait(clk_.negedge_event());
@@ -629,17 +631,7 @@ void BoardCosimEngine::end_case(EngineRun& run) {
   const auto& mb = final_mailbox_;
   run.overruns_known = true;
   run.overruns = mb[sw8085::kOverruns] | mb[sw8085::kOverruns + 1] << 8 | mb[sw8085::kOverruns + 2] << 16;
-  run.position_known = true;
-  run.x = run.y = 0;
-  try {
-    if (const auto cur = current_move(std::span<const std::uint8_t, 256>(mb), *codes_, queued_, slot_move_)) {
-      run.x = moves_[cur->first].origin_x + cur->second.x;
-      run.y = moves_[cur->first].origin_y + cur->second.y;
-    }
-  } catch (const std::exception& e) {
-    run.position_known = false;
-    run.error += (run.error.empty() ? "" : "; ") + std::string("mailbox: ") + e.what();
-  }
+  read_final_position(std::span<const std::uint8_t, 256>(mb), *codes_, queued_, slot_move_, moves_, run);
 }
 
 }  // namespace contour::cosim
