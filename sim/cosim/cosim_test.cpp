@@ -295,44 +295,41 @@ TEST(CosimRun, ReducedSweepOfThePaperSuite) {
   }
 }
 
-// A corrupted engine is caught, with the right first divergence.
-TEST(CosimRun, DroppedPulseOnTheIssIsCaught) {
-  Options o = paper_at({1e3});
-  o.engines = {"model", "iss"};
-  o.faults = {parse_fault("iss:drop:3")};
-  const auto rows = run_child(o);
-  const ChildRow* r = find(rows, "fig2", "iss", 1e3);
+// The paper suite at `rate` on the model and the engine that `fault`
+// corrupts (only `cases`, when given).
+std::vector<ChildRow> run_with_fault(const std::string& fault, double rate, std::vector<std::string> cases = {}) {
+  Options o = paper_at({rate});
+  o.faults = {parse_fault(fault)};
+  o.engines = {"model", o.faults[0].engine};
+  o.cases = std::move(cases);
+  return run_child(o);
+}
+
+// `engine` failed on `case_name` at `rate`, first diverging at pulse `index`.
+void expect_caught(const std::vector<ChildRow>& rows, const std::string& case_name, const std::string& engine,
+                   double rate, std::uint64_t index, const std::string& summary) {
+  const ChildRow* r = find(rows, case_name, engine, rate);
   ASSERT_TRUE(r);
   EXPECT_EQ(r->verdict, "FAIL");
-  EXPECT_EQ(r->div_index, 3u);
-  EXPECT_EQ(r->summary, "pulse 3: model +X, iss +Y");
+  EXPECT_EQ(r->div_index, index);
+  EXPECT_EQ(r->summary, summary);
+}
+
+// A corrupted engine is caught, with the right first divergence.
+TEST(CosimRun, DroppedPulseOnTheIssIsCaught) {
+  const auto rows = run_with_fault("iss:drop:3", 1e3);
+  expect_caught(rows, "fig2", "iss", 1e3, 3, "pulse 3: model +X, iss +Y");
   const ChildRow* m = find(rows, "fig2", "model", 1e3);
   ASSERT_TRUE(m);
   EXPECT_EQ(m->verdict, "PASS");
 }
 
 TEST(CosimRun, SwappedPulsesOnTheCoreAreCaught) {
-  Options o = paper_at({250e3});
-  o.engines = {"model", "rtl"};
-  o.faults = {parse_fault("rtl:swap:5")};
-  const auto rows = run_child(o);
-  const ChildRow* r = find(rows, "fig5", "rtl", 250e3);
-  ASSERT_TRUE(r);
-  EXPECT_EQ(r->verdict, "FAIL");
-  EXPECT_EQ(r->div_index, 5u);
-  EXPECT_EQ(r->summary, "pulse 5: model +Y, rtl -X");
+  expect_caught(run_with_fault("rtl:swap:5", 250e3), "fig5", "rtl", 250e3, 5, "pulse 5: model +Y, rtl -X");
 }
 
 TEST(CosimRun, FlippedSignOnTheBoardIsCaught) {
-  Options o = paper_at({1e3});
-  o.engines = {"model", "8085"};
-  o.cases = {"fig5"};
-  o.faults = {parse_fault("8085:flip:12")};
-  const auto rows = run_child(o);
-  const ChildRow* r = find(rows, "fig5", "8085", 1e3);
-  ASSERT_TRUE(r);
-  EXPECT_EQ(r->verdict, "FAIL");
-  EXPECT_EQ(r->summary, "pulse 12: model -X, 8085 +X");
+  expect_caught(run_with_fault("8085:flip:12", 1e3, {"fig5"}), "fig5", "8085", 1e3, 12, "pulse 12: model -X, 8085 +X");
 }
 
 // The core's clock runs only after command pulses and bus accesses (a
