@@ -30,7 +30,9 @@ std::string cosim_program() {
   return (self.parent_path() / "contour-cosim").string();
 }
 
-int run_cosim(const std::vector<std::string>& args) {
+// The `contour cosim` subcommand: runs contour-cosim with `args` and returns
+// its exit status (the co-simulation itself is cosim::run_cosim).
+int run_cosim_command(const std::vector<std::string>& args) {
   const std::string prog = cosim_program();
   if (::access(prog.c_str(), X_OK) != 0) {
     for (const auto& a : args)
@@ -73,8 +75,9 @@ int run_cosim(const std::vector<std::string>& args) {
   return 1;
 }
 
-const CommandRegistrar kCosim{
-    {"cosim", "SystemC co-simulation of model, Verilog core and 8085 at a command rate; reports", run_cosim}};
+const CommandRegistrar kCosim{{"cosim",
+                               "SystemC co-simulation of model, Verilog core and 8085 at a command rate; reports",
+                               run_cosim_command}};
 
 }  // namespace
 }  // namespace contour::cli

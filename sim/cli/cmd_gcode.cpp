@@ -131,47 +131,72 @@ void write_file(const std::filesystem::path& p, const std::string& text) {
   o << text;
 }
 
+// The axis velocity profiles (paper B's velocity figures), one point per chord.
+plot::Plot velocity_plot(const std::string& name, const std::vector<planner::Sample>& s, double T) {
+  plot::Plot p;
+  p.title = "Axis velocity profiles: " + name;
+  p.x_label = "time (s)";
+  p.y_label = "velocity (mm/min)";
+  plot::Series vx{"Vx", "#1f77b4", {}}, vy{"Vy", "#d62728", {}}, vz{"Vz", "#2ca02c", {}}, f{"feed", "#999999", {}};
+  for (std::size_t n = 1; n < s.size(); ++n) {
+    const Vec3 v = (60.0 / T) * (s[n].p - s[n - 1].p);
+    const double t = s[n].t - T / 2;  // the chord's mid-time
+    vx.points.push_back({t, v.x});
+    vy.points.push_back({t, v.y});
+    vz.points.push_back({t, v.z});
+    f.points.push_back({t, norm(v)});
+  }
+  p.series = {f, vx, vy, vz};
+  return p;
+}
+
+// The trajectory projected on the plane of axes `a` and `b` (0 X, 1 Y, 2 Z).
+plot::Plot plane_plot(const std::string& name, const std::vector<planner::Sample>& s, int a, int b) {
+  const char* names = "XYZ";
+  plot::Plot p;
+  p.title = std::string("Trajectory in the ") + names[a] + names[b] + " plane: " + name;
+  p.x_label = std::string(1, names[a]) + " (mm)";
+  p.y_label = std::string(1, names[b]) + " (mm)";
+  p.equal_aspect = true;
+  plot::Series path{"interpolated", "#d62728", {}};
+  for (const auto& x : s) path.points.push_back({x.p[a], x.p[b]});
+  p.series = {path};
+  return p;
+}
+
+// Segment `k`, an arc, in its own UV plane with its points Qs, Qc, Qe.
+plot::Plot uv_plot(const planner::Segment& g, std::size_t k, const std::vector<planner::Sample>& s) {
+  plot::Plot p;
+  p.title = std::string("Line ") + std::to_string(g.line) + " (" + kind_name(g) + ") in its UV plane";
+  p.x_label = "U (mm)";
+  p.y_label = "V (mm)";
+  p.equal_aspect = true;
+  plot::Series path{"interpolated", "#d62728", {}}, marks{"Qs, Qc, Qe", "#1f77b4", {}, 1.0, true, true};
+  for (const auto& x : s) {
+    if (x.seg != static_cast<int>(k)) continue;
+    const Vec3 w = x.p - g.origin;
+    path.points.push_back({dot(w, g.u_hat), dot(w, g.v_hat)});
+  }
+  marks.points = {{g.qs.u, g.qs.v}, {g.qc.u, g.qc.v}, {g.qe.u, g.qe.v}};
+  p.series = {path, marks};
+  return p;
+}
+
 int write_svgs(const std::string& dir, const std::string& file, const planner::Plan& plan,
                const std::vector<planner::Sample>& s) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir)) throw UsageError("--svg: cannot create directory '" + dir + "'");
-  const double T = plan.config.cycle_s;
   const std::string name = std::filesystem::path(file).filename().string();
   int files = 0;
-  {
-    plot::Plot p;
-    p.title = "Axis velocity profiles: " + name;
-    p.x_label = "time (s)";
-    p.y_label = "velocity (mm/min)";
-    plot::Series vx{"Vx", "#1f77b4", {}}, vy{"Vy", "#d62728", {}}, vz{"Vz", "#2ca02c", {}}, f{"feed", "#999999", {}};
-    for (std::size_t n = 1; n < s.size(); ++n) {
-      const Vec3 v = (60.0 / T) * (s[n].p - s[n - 1].p);
-      const double t = s[n].t - T / 2;  // the chord's mid-time
-      vx.points.push_back({t, v.x});
-      vy.points.push_back({t, v.y});
-      vz.points.push_back({t, v.z});
-      f.points.push_back({t, norm(v)});
-    }
-    p.series = {f, vx, vy, vz};
-    write_file(std::filesystem::path(dir) / "velocity.svg", plot::render(p));
-    ++files;
-  }
+  write_file(std::filesystem::path(dir) / "velocity.svg", plot::render(velocity_plot(name, s, plan.config.cycle_s)));
+  ++files;
   const struct {
     const char* file;
     int a, b;
   } planes[] = {{"xy.svg", 0, 1}, {"yz.svg", 1, 2}, {"zx.svg", 2, 0}};
-  const char* names = "XYZ";
   for (const auto& pl : planes) {
-    plot::Plot p;
-    p.title = std::string("Trajectory in the ") + names[pl.a] + names[pl.b] + " plane: " + name;
-    p.x_label = std::string(1, names[pl.a]) + " (mm)";
-    p.y_label = std::string(1, names[pl.b]) + " (mm)";
-    p.equal_aspect = true;
-    plot::Series path{"interpolated", "#d62728", {}};
-    for (const auto& x : s) path.points.push_back({x.p[pl.a], x.p[pl.b]});
-    p.series = {path};
-    write_file(std::filesystem::path(dir) / pl.file, plot::render(p));
+    write_file(std::filesystem::path(dir) / pl.file, plot::render(plane_plot(name, s, pl.a, pl.b)));
     ++files;
   }
   int arcs = 0;
@@ -179,38 +204,23 @@ int write_svgs(const std::string& dir, const std::string& file, const planner::P
     const auto& g = plan.segs[k].geom;
     if (g.kind != planner::Segment::Kind::Arc) continue;
     ++arcs;
-    plot::Plot p;
-    p.title = std::string("Line ") + std::to_string(g.line) + " (" + kind_name(g) + ") in its UV plane";
-    p.x_label = "U (mm)";
-    p.y_label = "V (mm)";
-    p.equal_aspect = true;
-    plot::Series path{"interpolated", "#d62728", {}}, marks{"Qs, Qc, Qe", "#1f77b4", {}, 1.0, true, true};
-    for (const auto& x : s) {
-      if (x.seg != static_cast<int>(k)) continue;
-      const Vec3 w = x.p - g.origin;
-      path.points.push_back({dot(w, g.u_hat), dot(w, g.v_hat)});
-    }
-    marks.points = {{g.qs.u, g.qs.v}, {g.qc.u, g.qc.v}, {g.qe.u, g.qe.v}};
-    p.series = {path, marks};
-    write_file(std::filesystem::path(dir) / ("uv-line" + std::to_string(g.line) + ".svg"), plot::render(p));
+    const std::string uv_file = "uv-line" + std::to_string(g.line) + ".svg";
+    write_file(std::filesystem::path(dir) / uv_file, plot::render(uv_plot(g, k, s)));
     ++files;
   }
   return files;
 }
 
-int run(const std::vector<std::string>& argv) {
-  const Args a(argv, {"pulses"},
-               {"format", "accel", "cycle", "tol", "chord", "config", "csv", "svg", "steps-per-mm", "engine"});
-  if (a.help()) {
-    std::printf(kHelp, stage_names().c_str());
-    return 0;
-  }
-  a.expect_positional({"FILE"});
-  const std::string file = a.positional()[0];
-  const std::string format = a.option_or("format", "summary");
-  if (format != "summary" && format != "json")
-    throw UsageError("--format: unknown format '" + format + "' (one of summary, json)");
+ChordMethod parse_chord(const std::string& v) {
+  if (v == "a") return ChordMethod::Inside;
+  if (v == "b") return ChordMethod::Outside;
+  if (v == "c") return ChordMethod::InsideOutside;
+  throw UsageError("--chord: unknown placement '" + v + "' (one of a, b, c)");
+}
 
+// The planner's configuration: paper B's defaults, then --config, then the
+// options that override it.
+Config parse_config(const Args& a) {
   Config c;
   if (auto f = a.option("config")) read_config(*f, c.machine);
   if (auto v = a.option("accel")) {
@@ -219,32 +229,53 @@ int run(const std::vector<std::string>& argv) {
   }
   if (auto v = a.option("cycle")) c.cycle_s = positive(*v, "--cycle") / 1000;
   if (auto v = a.option("tol")) c.tol_mm = positive(*v, "--tol") / 1000;
-  if (auto v = a.option("chord")) {
-    if (*v == "a") c.chord = ChordMethod::Inside;
-    else if (*v == "b") c.chord = ChordMethod::Outside;
-    else if (*v == "c") c.chord = ChordMethod::InsideOutside;
-    else throw UsageError("--chord: unknown placement '" + *v + "' (one of a, b, c)");
-  }
-  const bool pulses = a.flag("pulses");
-  if (!pulses && a.option("engine")) throw UsageError("--engine needs --pulses");
-  if (!pulses && a.option("steps-per-mm")) throw UsageError("--steps-per-mm needs --pulses");
-  if (pulses && (a.option("csv") || a.option("svg") || a.option("format")))
-    throw UsageError("--pulses prints the step stream; it does not combine with --format, --csv or --svg");
-  const double spm = pulses ? positive(a.option_or("steps-per-mm", "1000"), "--steps-per-mm") : 1000;
-  const std::string engine = a.option_or("engine", "model");
-  if (pulses && !planner::pulse_stages().count(engine))
-    throw UsageError("--engine: unknown engine '" + engine + "' (one of " + stage_names() + ")");
+  if (auto v = a.option("chord")) c.chord = parse_chord(*v);
+  return c;
+}
 
+// What the command line asks for, checked.
+struct Request {
+  std::string file, format;
+  Config config;
+  bool pulses = false;        // print the two-stage step stream
+  double steps_per_mm = 1000;
+  std::string engine;         // the stage-2 engine of --pulses
+};
+
+Request parse_request(const Args& a) {
+  Request q;
+  a.expect_positional({"FILE"});
+  q.file = a.positional()[0];
+  q.format = a.option_or("format", "summary");
+  if (q.format != "summary" && q.format != "json")
+    throw UsageError("--format: unknown format '" + q.format + "' (one of summary, json)");
+  q.config = parse_config(a);
+  q.pulses = a.flag("pulses");
+  if (!q.pulses && a.option("engine")) throw UsageError("--engine needs --pulses");
+  if (!q.pulses && a.option("steps-per-mm")) throw UsageError("--steps-per-mm needs --pulses");
+  if (q.pulses && (a.option("csv") || a.option("svg") || a.option("format")))
+    throw UsageError("--pulses prints the step stream; it does not combine with --format, --csv or --svg");
+  if (q.pulses) q.steps_per_mm = positive(a.option_or("steps-per-mm", "1000"), "--steps-per-mm");
+  q.engine = a.option_or("engine", "model");
+  if (q.pulses && !planner::pulse_stages().count(q.engine))
+    throw UsageError("--engine: unknown engine '" + q.engine + "' (one of " + stage_names() + ")");
+  return q;
+}
+
+std::vector<gcode::Block> read_program(const std::string& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw UsageError("cannot read '" + file + "'");
   std::stringstream buf;
   buf << in.rdbuf();
-  std::vector<gcode::Block> blocks;
   try {
-    blocks = gcode::parse(buf.str());
+    return gcode::parse(buf.str());
   } catch (const gcode::Error& e) {
     throw UsageError(file + ": " + e.what());
   }
+}
+
+// Plans the program; refuses one that runs more cycles than fit in memory.
+planner::Plan plan_program(const std::string& file, const std::vector<gcode::Block>& blocks, const Config& c) {
   planner::Plan plan;
   try {
     plan = planner::plan(blocks, c);
@@ -256,86 +287,115 @@ int run(const std::vector<std::string>& argv) {
     throw UsageError(file + ": the program runs " + std::to_string(plan.total_time) + " s = " +
                      std::to_string(static_cast<long long>(plan.total_time / c.cycle_s)) +
                      " cycles, more than this tool simulates (2e7)");
-  const auto samples = planner::interpolate(plan);
-
-  if (pulses) {
-    std::vector<planner::TimedPulse> out;
-    try {
-      out = planner::pulse_stages().at(engine)(planner::chords_in_steps(samples, spm), c.cycle_s);
-    } catch (const InputError& e) {
-      throw UsageError(std::string("--pulses: ") + e.what());
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--pulses: ") + e.what());
-    }
-    std::string text;
-    char b[64];
-    for (const auto& p : out) {
-      std::snprintf(b, sizeof b, "%.9f %s\n", p.t, to_string(p.pulse).c_str());
-      text += b;
-      if (text.size() > (1u << 16)) std::fputs(text.c_str(), stdout), text.clear();
-    }
-    std::fputs(text.c_str(), stdout);
-    return 0;
-  }
-
-  const planner::Report r = planner::analyse(plan, samples);
-  if (auto p = a.option("csv")) write_csv(*p, samples, c.cycle_s);
-  int svg_files = 0;
-  if (auto d = a.option("svg")) svg_files = write_svgs(*d, file, plan, samples);
-  bool all_ok = r.tol_ok;
-  for (const auto& ax : r.axes) all_ok = all_ok && ax.v_ok && ax.a_ok;
-  const char* names[] = {"X", "Y", "Z"};
-
-  if (format == "json") {
-    std::ostringstream o;
-    o.precision(10);
-    o << "{\"file\": " << json_string(file) << ", \"blocks\": " << plan.segs.size() << ", \"cycles\": " << r.cycles
-      << ", \"cycle_s\": " << c.cycle_s << ", \"total_time_s\": " << r.total_time_s
-      << ", \"tolerance_mm\": " << c.tol_mm << ", \"chord_method\": \"" << planner::chord_name(c.chord)
-      << "\", \"peak_feed_mm_min\": " << r.peak_feed * 60 << ", \"max_chord_error_mm\": " << r.max_chord_error
-      << ", \"tolerance_ok\": " << (r.tol_ok ? "true" : "false") << ", \"axes\": {";
-    for (int i = 0; i < 3; ++i) {
-      const auto& ax = r.axes[i];
-      o << (i ? ", " : "") << "\"" << names[i] << "\": {\"peak_velocity_mm_min\": " << ax.peak_v * 60
-        << ", \"velocity_limit_mm_min\": " << ax.vmax * 60 << ", \"velocity_ok\": " << (ax.v_ok ? "true" : "false")
-        << ", \"peak_accel_mm_min2\": " << ax.peak_a * 3600 << ", \"accel_limit_mm_min2\": " << ax.amax * 3600
-        << ", \"accel_ok\": " << (ax.a_ok ? "true" : "false") << "}";
-    }
-    o << "}, \"segments\": [";
-    for (std::size_t k = 0; k < plan.segs.size(); ++k) {
-      const auto& s = plan.segs[k];
-      o << (k ? ", " : "") << "{\"line\": " << s.geom.line << ", \"kind\": \"" << kind_name(s.geom)
-        << "\", \"length_mm\": " << s.geom.length << ", \"time_s\": " << s.duration
-        << ", \"v_start_mm_min\": " << s.v_start * 60 << ", \"v_cruise_mm_min\": " << s.v_cruise * 60
-        << ", \"v_end_mm_min\": " << s.v_end * 60 << ", \"accel_mm_s2\": " << s.a_t << ", \"cap\": \""
-        << planner::cap_name(s.cap) << "\"}";
-    }
-    o << "], \"all_ok\": " << (all_ok ? "true" : "false") << "}\n";
-    std::fputs(o.str().c_str(), stdout);
-  } else {
-    std::printf("program        %s: %zu blocks, %zu cycles of %g ms\n", file.c_str(), plan.segs.size(), r.cycles,
-                c.cycle_s * 1000);
-    std::printf("total time     %.4f s\n", r.total_time_s);
-    std::printf("peak feed      %.1f mm/min\n", r.peak_feed * 60);
-    std::printf("max chord err  %.4f um (tolerance %g um, chord method %s): %s\n", r.max_chord_error * 1000,
-                c.tol_mm * 1000, planner::chord_name(c.chord), r.tol_ok ? "ok" : "EXCEEDED");
-    std::printf("axis  peak v (mm/min)  limit        peak a (mm/min^2)  limit\n");
-    for (int i = 0; i < 3; ++i) {
-      const auto& ax = r.axes[i];
-      std::printf("%-5s %-16.1f %-9.1f %-3s %-18.0f %-9.0f %s\n", names[i], ax.peak_v * 60, ax.vmax * 60,
-                  ax.v_ok ? "ok" : "EXCEEDED", ax.peak_a * 3600, ax.amax * 3600, ax.a_ok ? "ok" : "EXCEEDED");
-    }
-    std::printf("blocks:\n");
-    for (const auto& s : plan.segs)
-      std::printf("  line %-4d %-11s %10.3f mm  %8.1f -> %8.1f -> %8.1f mm/min  %8.4f s  (cruise cap: %s)\n",
-                  s.geom.line, kind_name(s.geom), s.geom.length, s.v_start * 60, s.v_cruise * 60, s.v_end * 60,
-                  s.duration, planner::cap_name(s.cap));
-    if (svg_files) std::printf("svg            %d files in %s\n", svg_files, a.option("svg")->c_str());
-  }
-  return all_ok ? 0 : 1;
+  return plan;
 }
 
-const CommandRegistrar kRegistrar{Command{"gcode", "paper B: plan and chord-interpolate a G-code program", run}};
+// --pulses: one line per pulse of the two-stage step stream.
+int print_pulses(const Request& q, const std::vector<planner::Sample>& samples) {
+  std::vector<planner::TimedPulse> out;
+  try {
+    out = planner::pulse_stages().at(q.engine)(planner::chords_in_steps(samples, q.steps_per_mm), q.config.cycle_s);
+  } catch (const InputError& e) {
+    throw UsageError(std::string("--pulses: ") + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--pulses: ") + e.what());
+  }
+  std::string text;
+  char b[64];
+  for (const auto& p : out) {
+    std::snprintf(b, sizeof b, "%.9f %s\n", p.t, to_string(p.pulse).c_str());
+    text += b;
+    if (text.size() > (1u << 16)) std::fputs(text.c_str(), stdout), text.clear();
+  }
+  std::fputs(text.c_str(), stdout);
+  return 0;
+}
+
+const char* const kAxisNames[] = {"X", "Y", "Z"};
+
+bool limits_respected(const planner::Report& r) {
+  bool all_ok = r.tol_ok;
+  for (const auto& ax : r.axes) all_ok = all_ok && ax.v_ok && ax.a_ok;
+  return all_ok;
+}
+
+void print_json(const Request& q, const planner::Plan& plan, const planner::Report& r) {
+  const Config& c = q.config;
+  std::ostringstream o;
+  o.precision(10);
+  o << "{\"file\": " << json_string(q.file) << ", \"blocks\": " << plan.segs.size() << ", \"cycles\": " << r.cycles
+    << ", \"cycle_s\": " << c.cycle_s << ", \"total_time_s\": " << r.total_time_s
+    << ", \"tolerance_mm\": " << c.tol_mm << ", \"chord_method\": \"" << planner::chord_name(c.chord)
+    << "\", \"peak_feed_mm_min\": " << r.peak_feed * 60 << ", \"max_chord_error_mm\": " << r.max_chord_error
+    << ", \"tolerance_ok\": " << (r.tol_ok ? "true" : "false") << ", \"axes\": {";
+  for (int i = 0; i < 3; ++i) {
+    const auto& ax = r.axes[i];
+    o << (i ? ", " : "") << "\"" << kAxisNames[i] << "\": {\"peak_velocity_mm_min\": " << ax.peak_v * 60
+      << ", \"velocity_limit_mm_min\": " << ax.vmax * 60 << ", \"velocity_ok\": " << (ax.v_ok ? "true" : "false")
+      << ", \"peak_accel_mm_min2\": " << ax.peak_a * 3600 << ", \"accel_limit_mm_min2\": " << ax.amax * 3600
+      << ", \"accel_ok\": " << (ax.a_ok ? "true" : "false") << "}";
+  }
+  o << "}, \"segments\": [";
+  for (std::size_t k = 0; k < plan.segs.size(); ++k) {
+    const auto& s = plan.segs[k];
+    o << (k ? ", " : "") << "{\"line\": " << s.geom.line << ", \"kind\": \"" << kind_name(s.geom)
+      << "\", \"length_mm\": " << s.geom.length << ", \"time_s\": " << s.duration
+      << ", \"v_start_mm_min\": " << s.v_start * 60 << ", \"v_cruise_mm_min\": " << s.v_cruise * 60
+      << ", \"v_end_mm_min\": " << s.v_end * 60 << ", \"accel_mm_s2\": " << s.a_t << ", \"cap\": \""
+      << planner::cap_name(s.cap) << "\"}";
+  }
+  o << "], \"all_ok\": " << (limits_respected(r) ? "true" : "false") << "}\n";
+  std::fputs(o.str().c_str(), stdout);
+}
+
+void print_summary(const Request& q, const planner::Plan& plan, const planner::Report& r) {
+  const Config& c = q.config;
+  std::printf("program        %s: %zu blocks, %zu cycles of %g ms\n", q.file.c_str(), plan.segs.size(), r.cycles,
+              c.cycle_s * 1000);
+  std::printf("total time     %.4f s\n", r.total_time_s);
+  std::printf("peak feed      %.1f mm/min\n", r.peak_feed * 60);
+  std::printf("max chord err  %.4f um (tolerance %g um, chord method %s): %s\n", r.max_chord_error * 1000,
+              c.tol_mm * 1000, planner::chord_name(c.chord), r.tol_ok ? "ok" : "EXCEEDED");
+  std::printf("axis  peak v (mm/min)  limit        peak a (mm/min^2)  limit\n");
+  for (int i = 0; i < 3; ++i) {
+    const auto& ax = r.axes[i];
+    std::printf("%-5s %-16.1f %-9.1f %-3s %-18.0f %-9.0f %s\n", kAxisNames[i], ax.peak_v * 60, ax.vmax * 60,
+                ax.v_ok ? "ok" : "EXCEEDED", ax.peak_a * 3600, ax.amax * 3600, ax.a_ok ? "ok" : "EXCEEDED");
+  }
+  std::printf("blocks:\n");
+  for (const auto& s : plan.segs)
+    std::printf("  line %-4d %-11s %10.3f mm  %8.1f -> %8.1f -> %8.1f mm/min  %8.4f s  (cruise cap: %s)\n",
+                s.geom.line, kind_name(s.geom), s.geom.length, s.v_start * 60, s.v_cruise * 60, s.v_end * 60,
+                s.duration, planner::cap_name(s.cap));
+}
+
+int run_gcode_command(const std::vector<std::string>& argv) {
+  const Args a(argv, {"pulses"},
+               {"format", "accel", "cycle", "tol", "chord", "config", "csv", "svg", "steps-per-mm", "engine"});
+  if (a.help()) {
+    std::printf(kHelp, stage_names().c_str());
+    return 0;
+  }
+  const Request q = parse_request(a);
+  const planner::Plan plan = plan_program(q.file, read_program(q.file), q.config);
+  const auto samples = planner::interpolate(plan);
+  if (q.pulses) return print_pulses(q, samples);
+
+  const planner::Report r = planner::analyse(plan, samples);
+  if (auto p = a.option("csv")) write_csv(*p, samples, q.config.cycle_s);
+  int svg_files = 0;
+  if (auto d = a.option("svg")) svg_files = write_svgs(*d, q.file, plan, samples);
+  if (q.format == "json") {
+    print_json(q, plan, r);
+  } else {
+    print_summary(q, plan, r);
+    if (svg_files) std::printf("svg            %d files in %s\n", svg_files, a.option("svg")->c_str());
+  }
+  return limits_respected(r) ? 0 : 1;
+}
+
+const CommandRegistrar kRegistrar{
+    Command{"gcode", "paper B: plan and chord-interpolate a G-code program", run_gcode_command}};
 
 }  // namespace
 }  // namespace contour::cli

@@ -32,6 +32,10 @@ int sc_main(int argc, char** argv) {
 }
 
 namespace contour::cosim {
+
+// gtest prints a Verdict as its word.
+void PrintTo(Verdict v, std::ostream* os) { *os << to_string(v); }
+
 namespace {
 
 const char* kFig2 = "+X +Y +X +Y +X +Y +X +Y +X +Y +X";
@@ -72,7 +76,7 @@ TEST(Scoreboard, TheSuitesPaperCasesAreThePapersFigures) {
 TEST(Scoreboard, IdenticalStreamPasses) {
   const auto exp = expect(fig2());
   const Row r = judge(fig2(), exp, 4e3, commands(11), run_of("iss", pulses(kFig2), 0));
-  EXPECT_EQ(r.verdict, "PASS") << r.note;
+  EXPECT_EQ(r.verdict, Verdict::Pass) << r.note;
   EXPECT_EQ(r.lost, 0u);
   EXPECT_TRUE(r.latency_exact);
   EXPECT_NEAR(r.lat_min_us, 1.0, 1e-9);
@@ -82,7 +86,7 @@ TEST(Scoreboard, DroppedPulseIsTheFirstDivergence) {
   auto ps = pulses(kFig2);
   ps.erase(ps.begin() + 6);  // pulse 7 (+X) missing: the engine's 7th is +Y
   const Row r = judge(fig2(), expect(fig2()), 4e3, commands(11), run_of("rtl", ps, 1));
-  EXPECT_EQ(r.verdict, "FAIL");
+  EXPECT_EQ(r.verdict, Verdict::Fail);
   ASSERT_TRUE(r.divergence);
   EXPECT_EQ(r.divergence->index, 7u);
   EXPECT_EQ(r.divergence->summary, "pulse 7: model +X, rtl +Y");
@@ -93,7 +97,7 @@ TEST(Scoreboard, SwappedPulsesAreCaught) {
   auto ps = pulses(kFig5);
   std::swap(ps[4], ps[5]);  // +Y -X becomes -X +Y at pulses 5, 6
   const Row r = judge(fig5(), expect(fig5()), 1e3, commands(12), run_of("8085", ps, 0));
-  EXPECT_EQ(r.verdict, "FAIL");
+  EXPECT_EQ(r.verdict, Verdict::Fail);
   ASSERT_TRUE(r.divergence);
   EXPECT_EQ(r.divergence->summary, "pulse 5: model +Y, 8085 -X");
   EXPECT_EQ(r.mismatches, 2u);
@@ -103,7 +107,7 @@ TEST(Scoreboard, ExtraPulseIsAMismatch) {
   auto ps = pulses(kFig2);
   ps.push_back(Pulse{Axis::X, 1});
   const Row r = judge(fig2(), expect(fig2()), 1e3, commands(11), run_of("iss", ps, 0));
-  EXPECT_EQ(r.verdict, "FAIL");
+  EXPECT_EQ(r.verdict, Verdict::Fail);
   ASSERT_TRUE(r.divergence);
   EXPECT_EQ(r.divergence->index, 12u);
 }
@@ -112,20 +116,20 @@ TEST(Scoreboard, LossesFlaggedOneForOneAreFlaggedNotFailed) {
   auto ps = pulses(kFig2);
   ps.resize(8);  // a prefix: 3 command pulses gave nothing
   const Row ok = judge(fig2(), expect(fig2()), 50e3, commands(11), run_of("8085", ps, 3));
-  EXPECT_EQ(ok.verdict, "FLAGGED") << ok.note;
+  EXPECT_EQ(ok.verdict, Verdict::Flagged) << ok.note;
   EXPECT_EQ(ok.lost, 3u);
   const Row under = judge(fig2(), expect(fig2()), 50e3, commands(11), run_of("8085", ps, 2));
-  EXPECT_EQ(under.verdict, "FAIL");
+  EXPECT_EQ(under.verdict, Verdict::Fail);
   const Row over = judge(fig2(), expect(fig2()), 50e3, commands(11), run_of("8085", pulses(kFig2), 1));
-  EXPECT_EQ(over.verdict, "FAIL");
+  EXPECT_EQ(over.verdict, Verdict::Fail);
 }
 
 TEST(Scoreboard, TheCoreMayNotLoseUpTo250kppsEvenIfFlagged) {
   auto ps = pulses(kFig2);
   ps.resize(10);
-  EXPECT_EQ(judge(fig2(), expect(fig2()), 250e3, commands(11), run_of("rtl", ps, 1)).verdict, "FAIL");
-  EXPECT_EQ(judge(fig2(), expect(fig2()), 500e3, commands(11), run_of("rtl", ps, 1)).verdict, "FLAGGED");
-  EXPECT_EQ(judge(fig2(), expect(fig2()), 1e3, commands(11), run_of("iss", ps, 1)).verdict, "FAIL");
+  EXPECT_EQ(judge(fig2(), expect(fig2()), 250e3, commands(11), run_of("rtl", ps, 1)).verdict, Verdict::Fail);
+  EXPECT_EQ(judge(fig2(), expect(fig2()), 500e3, commands(11), run_of("rtl", ps, 1)).verdict, Verdict::Flagged);
+  EXPECT_EQ(judge(fig2(), expect(fig2()), 1e3, commands(11), run_of("iss", ps, 1)).verdict, Verdict::Fail);
 }
 
 TEST(Scoreboard, WrongFinalPositionFails) {
@@ -134,15 +138,15 @@ TEST(Scoreboard, WrongFinalPositionFails) {
   run.x = 6;
   run.y = 4;
   const Row r = judge(fig2(), expect(fig2()), 1e3, commands(11), run);
-  EXPECT_EQ(r.verdict, "FAIL");
+  EXPECT_EQ(r.verdict, Verdict::Fail);
   EXPECT_NE(r.note.find("final position (6, 4), model (6, 5)"), std::string::npos) << r.note;
 }
 
 TEST(Scoreboard, VerdictLine) {
   std::vector<Row> rows(40);
-  for (auto& r : rows) r.verdict = "PASS";
+  for (auto& r : rows) r.verdict = Verdict::Pass;
   EXPECT_EQ(verdict_line(rows), "100.00% PASS 40 PASSED, 0 FAILED");
-  rows[3].verdict = "FAIL";
+  rows[3].verdict = Verdict::Fail;
   EXPECT_EQ(verdict_line(rows), "97.50% FAIL 39 PASSED, 1 FAILED");
 }
 
@@ -179,10 +183,10 @@ std::vector<ChildRow> run_child(Options opt) {
     std::ostringstream o;
     int code = 0;
     try {
-      const Outcome out = run_cosim(opt);
+      const CosimOutcome out = run_cosim(opt);
       for (const auto& r : out.rows)
-        o << r.case_name << '\t' << r.engine << '\t' << r.rate_pps << '\t' << r.verdict << '\t' << r.pulses << '\t'
-          << r.lost << '\t' << r.overruns << '\t' << r.mismatches << '\t'
+        o << r.case_name << '\t' << r.engine << '\t' << r.rate_pps << '\t' << to_string(r.verdict) << '\t'
+          << r.pulses << '\t' << r.lost << '\t' << r.overruns << '\t' << r.mismatches << '\t'
           << (r.divergence ? r.divergence->index : 0) << '\t'
           << (r.divergence ? r.divergence->summary : std::string("-")) << '\t'
           << (r.has_latency ? r.lat_min_us : -1) << '\t' << (r.has_latency ? r.lat_max_us : -1) << '\n';
@@ -291,44 +295,41 @@ TEST(CosimRun, ReducedSweepOfThePaperSuite) {
   }
 }
 
-// A corrupted engine is caught, with the right first divergence.
-TEST(CosimRun, DroppedPulseOnTheIssIsCaught) {
-  Options o = paper_at({1e3});
-  o.engines = {"model", "iss"};
-  o.faults = {parse_fault("iss:drop:3")};
-  const auto rows = run_child(o);
-  const ChildRow* r = find(rows, "fig2", "iss", 1e3);
+// The paper suite at `rate` on the model and the engine that `fault`
+// corrupts (only `cases`, when given).
+std::vector<ChildRow> run_with_fault(const std::string& fault, double rate, std::vector<std::string> cases = {}) {
+  Options o = paper_at({rate});
+  o.faults = {parse_fault(fault)};
+  o.engines = {"model", o.faults[0].engine};
+  o.cases = std::move(cases);
+  return run_child(o);
+}
+
+// `engine` failed on `case_name` at `rate`, first diverging at pulse `index`.
+void expect_caught(const std::vector<ChildRow>& rows, const std::string& case_name, const std::string& engine,
+                   double rate, std::uint64_t index, const std::string& summary) {
+  const ChildRow* r = find(rows, case_name, engine, rate);
   ASSERT_TRUE(r);
   EXPECT_EQ(r->verdict, "FAIL");
-  EXPECT_EQ(r->div_index, 3u);
-  EXPECT_EQ(r->summary, "pulse 3: model +X, iss +Y");
+  EXPECT_EQ(r->div_index, index);
+  EXPECT_EQ(r->summary, summary);
+}
+
+// A corrupted engine is caught, with the right first divergence.
+TEST(CosimRun, DroppedPulseOnTheIssIsCaught) {
+  const auto rows = run_with_fault("iss:drop:3", 1e3);
+  expect_caught(rows, "fig2", "iss", 1e3, 3, "pulse 3: model +X, iss +Y");
   const ChildRow* m = find(rows, "fig2", "model", 1e3);
   ASSERT_TRUE(m);
   EXPECT_EQ(m->verdict, "PASS");
 }
 
 TEST(CosimRun, SwappedPulsesOnTheCoreAreCaught) {
-  Options o = paper_at({250e3});
-  o.engines = {"model", "rtl"};
-  o.faults = {parse_fault("rtl:swap:5")};
-  const auto rows = run_child(o);
-  const ChildRow* r = find(rows, "fig5", "rtl", 250e3);
-  ASSERT_TRUE(r);
-  EXPECT_EQ(r->verdict, "FAIL");
-  EXPECT_EQ(r->div_index, 5u);
-  EXPECT_EQ(r->summary, "pulse 5: model +Y, rtl -X");
+  expect_caught(run_with_fault("rtl:swap:5", 250e3), "fig5", "rtl", 250e3, 5, "pulse 5: model +Y, rtl -X");
 }
 
 TEST(CosimRun, FlippedSignOnTheBoardIsCaught) {
-  Options o = paper_at({1e3});
-  o.engines = {"model", "8085"};
-  o.cases = {"fig5"};
-  o.faults = {parse_fault("8085:flip:12")};
-  const auto rows = run_child(o);
-  const ChildRow* r = find(rows, "fig5", "8085", 1e3);
-  ASSERT_TRUE(r);
-  EXPECT_EQ(r->verdict, "FAIL");
-  EXPECT_EQ(r->summary, "pulse 12: model -X, 8085 +X");
+  expect_caught(run_with_fault("8085:flip:12", 1e3, {"fig5"}), "fig5", "8085", 1e3, 12, "pulse 12: model -X, 8085 +X");
 }
 
 // The core's clock runs only after command pulses and bus accesses (a

@@ -48,6 +48,25 @@ std::optional<std::pair<int, State>> current_move(std::span<const std::uint8_t, 
   return std::make_pair(pick, sw8085::decode(*queued[pick], mb, codes, n));
 }
 
+// The engine's position at the end of a case (absolute, on the case's
+// path), from the mailbox; a mailbox that does not decode is an error of the
+// run, and the position is then unknown.
+void read_final_position(std::span<const std::uint8_t, 256> mb, const sw8085::Codes& codes,
+                         const std::vector<std::unique_ptr<sw8085::SlotMove>>& queued,
+                         const std::array<int, 2>& slot_move, const std::vector<Placed>& moves, EngineRun& run) {
+  run.position_known = true;
+  run.x = run.y = 0;
+  try {
+    if (const auto cur = current_move(mb, codes, queued, slot_move)) {
+      run.x = moves[cur->first].origin_x + cur->second.x;
+      run.y = moves[cur->first].origin_y + cur->second.y;
+    }
+  } catch (const std::exception& e) {
+    run.position_known = false;
+    run.error += (run.error.empty() ? "" : "; ") + std::string("mailbox: ") + e.what();
+  }
+}
+
 }  // namespace
 
 // --- faults --------------------------------------------------------------------
@@ -101,13 +120,13 @@ void FaultInjector::pulse(const Pulse& p, const std::string& state) {
 
 // --- model ---------------------------------------------------------------------
 
-ModelEngine::ModelEngine(sc_core::sc_module_name n) : CosimEngine(n) {
+ModelCosimEngine::ModelCosimEngine(sc_core::sc_module_name n) : CosimEngine(n) {
   SC_METHOD(on_cmd);
   sensitive << i_cmd.pos();
   dont_initialize();
 }
 
-void ModelEngine::begin_case(const Case& c) {
+void ModelCosimEngine::begin_case(const Case& c) {
   moves_ = place(c.moves);
   next_ = 0;
   cur_ = nullptr;
@@ -115,7 +134,7 @@ void ModelEngine::begin_case(const Case& c) {
   start_next();
 }
 
-bool ModelEngine::start_next() {
+bool ModelCosimEngine::start_next() {
   lin_.reset();
   circ_.reset();
   cur_ = nullptr;
@@ -130,7 +149,7 @@ bool ModelEngine::start_next() {
   return false;
 }
 
-void ModelEngine::on_cmd() {
+void ModelCosimEngine::on_cmd() {
   if (!active_ || !cur_) return;
   const std::optional<Pulse> p = lin_ ? lin_->step() : circ_->step();
   const State s = lin_ ? lin_->state() : circ_->state();
@@ -138,10 +157,41 @@ void ModelEngine::on_cmd() {
   if (lin_ ? lin_->done() : circ_->done()) start_next();
 }
 
-void ModelEngine::end_case(EngineRun& run) {
+void ModelCosimEngine::end_case(EngineRun& run) {
   active_ = false;
   run.overruns_known = true;  // the model never refuses a command pulse
   run.overruns = 0;
+}
+
+// --- the Verilated engines ------------------------------------------------------------
+
+VerilatedCosimEngine::VerilatedCosimEngine(sc_core::sc_module_name n) : CosimEngine(n) {}
+
+VerilatedCosimEngine::~VerilatedCosimEngine() { close_trace(); }
+
+void VerilatedCosimEngine::open_trace(const std::string& path) {
+  trace_ = std::make_unique<VerilatedFstSc>();
+  trace_model(*trace_);
+  trace_->open(path.c_str());
+}
+
+void VerilatedCosimEngine::close_trace() {
+  if (trace_) trace_->close();
+  trace_.reset();
+}
+
+void VerilatedCosimEngine::watch_step_pins() {
+  SC_METHOD(on_step);
+  sensitive << step_x_ << step_y_;
+  dont_initialize();
+}
+
+void VerilatedCosimEngine::on_step() {
+  const bool x = step_x_.read(), y = step_y_.read();
+  if (x && !last_x_) emit(step_pulse(Axis::X, dir_x_.read()));
+  if (y && !last_y_) emit(step_pulse(Axis::Y, dir_y_.read()));
+  last_x_ = x;
+  last_y_ = y;
 }
 
 // --- rtl: interp_top -----------------------------------------------------------------
@@ -155,8 +205,8 @@ constexpr std::uint32_t kSrcPin = 1, kCtrlClear = 1u << 3;
 constexpr std::uint32_t kStatusBusy = 1, kStatusFull = 4, kStatusReject = 16;
 }  // namespace reg
 
-CoreEngine::CoreEngine(sc_core::sc_module_name n, double f_clk_hz, StepTiming timing, bool free_clock)
-    : CosimEngine(n),
+CoreCosimEngine::CoreCosimEngine(sc_core::sc_module_name n, double f_clk_hz, StepTiming timing, bool free_clock)
+    : VerilatedCosimEngine(n),
       period_(sc_time::from_value(static_cast<sc_dt::uint64>(1e12 / f_clk_hz + 0.5))),
       timing_(timing),
       free_clock_(free_clock) {
@@ -186,31 +236,20 @@ CoreEngine::CoreEngine(sc_core::sc_module_name n, double f_clk_hz, StepTiming ti
   SC_METHOD(on_cmd);
   sensitive << i_cmd.pos();
   dont_initialize();
-  SC_METHOD(on_step);
-  sensitive << step_x_ << step_y_;
-  dont_initialize();
+  watch_step_pins();
 }
 
-CoreEngine::~CoreEngine() { close_trace(); }
+CoreCosimEngine::~CoreCosimEngine() { close_trace(); }
 
-void CoreEngine::open_trace(const std::string& path) {
-  trace_ = std::make_unique<VerilatedFstSc>();
-  top_->trace(trace_.get(), 99);
-  trace_->open(path.c_str());
-}
+void CoreCosimEngine::trace_model(VerilatedFstSc& fst) { top_->trace(&fst, 99); }
 
-void CoreEngine::close_trace() {
-  if (trace_) trace_->close();
-  trace_.reset();
-}
-
-void CoreEngine::keep_awake(std::uint64_t cycles) {
+void CoreCosimEngine::keep_awake(std::uint64_t cycles) {
   const sc_time until = sc_time_stamp() + period_ * static_cast<double>(cycles);
   if (until > run_until_) run_until_ = until;
   wake_.notify(SC_ZERO_TIME);
 }
 
-void CoreEngine::clock_thread() {
+void CoreCosimEngine::clock_thread() {
   const sc_time half = period_ / 2.0;
   const sc_time rest = period_ - half;
   while (true) {
@@ -227,17 +266,9 @@ void CoreEngine::clock_thread() {
   }
 }
 
-void CoreEngine::on_cmd() { keep_awake(awake_cycles_); }
+void CoreCosimEngine::on_cmd() { keep_awake(awake_cycles_); }
 
-void CoreEngine::on_step() {
-  const bool x = step_x_.read(), y = step_y_.read();
-  if (x && !last_x_) emit(step_pulse(Axis::X, dir_x_.read()));
-  if (y && !last_y_) emit(step_pulse(Axis::Y, dir_y_.read()));
-  last_x_ = x;
-  last_y_ = y;
-}
-
-void CoreEngine::wb_cycle(bool we, std::uint32_t adr, std::uint32_t v, std::uint32_t* out) {
+void CoreCosimEngine::wb_cycle(bool we, std::uint32_t adr, std::uint32_t v, std::uint32_t* out) {
   keep_awake(64);
   sc_core::wait(clk_.negedge_event());
   cyc_.write(true);
@@ -257,15 +288,15 @@ void CoreEngine::wb_cycle(bool we, std::uint32_t adr, std::uint32_t v, std::uint
   we_.write(false);
 }
 
-void CoreEngine::wb_write(std::uint32_t adr, std::uint32_t v) { wb_cycle(true, adr, v, nullptr); }
+void CoreCosimEngine::wb_write(std::uint32_t adr, std::uint32_t v) { wb_cycle(true, adr, v, nullptr); }
 
-std::uint32_t CoreEngine::wb_read(std::uint32_t adr) {
+std::uint32_t CoreCosimEngine::wb_read(std::uint32_t adr) {
   std::uint32_t v = 0;
   wb_cycle(false, adr, 0, &v);
   return v;
 }
 
-void CoreEngine::begin_case(const Case& c) {
+void CoreCosimEngine::begin_case(const Case& c) {
   moves_ = place(c.moves);
   keep_awake(64);
   rst_.write(true);
@@ -304,7 +335,7 @@ void CoreEngine::begin_case(const Case& c) {
     if (n > 100) throw std::runtime_error("rtl: the core did not start the first move");
 }
 
-void CoreEngine::end_case(EngineRun& run) {
+void CoreCosimEngine::end_case(EngineRun& run) {
   run.overruns_known = true;
   run.overruns = wb_read(reg::kOvrCount);
   run.position_known = true;
@@ -315,7 +346,7 @@ void CoreEngine::end_case(EngineRun& run) {
 
 // --- iss: the program on the C++ ISS ------------------------------------------------
 
-IssEngine::IssEngine(sc_core::sc_module_name n, double f_clk_hz)
+IssCosimEngine::IssCosimEngine(sc_core::sc_module_name n, double f_clk_hz)
     : CosimEngine(n), period_(sc_time::from_value(static_cast<sc_dt::uint64>(1e12 / f_clk_hz + 0.5))) {
   SC_THREAD(cpu_thread);
   SC_METHOD(on_cmd);
@@ -323,9 +354,9 @@ IssEngine::IssEngine(sc_core::sc_module_name n, double f_clk_hz)
   dont_initialize();
 }
 
-IssEngine::~IssEngine() = default;
+IssCosimEngine::~IssCosimEngine() = default;
 
-void IssEngine::begin_case(const Case& c) {
+void IssCosimEngine::begin_case(const Case& c) {
   moves_ = place(c.moves);
   next_move_ = 0;
   next_slot_ = 0;
@@ -342,7 +373,7 @@ void IssEngine::begin_case(const Case& c) {
   started_.notify(SC_ZERO_TIME);
 }
 
-void IssEngine::feed() {
+void IssCosimEngine::feed() {
   while (next_move_ < moves_.size() && host_->slot_free(next_slot_)) {
     queued_.push_back(std::make_unique<sw8085::SlotMove>(host_->queue(moves_[next_move_].move)));
     slot_move_[next_slot_] = static_cast<int>(queued_.size() - 1);
@@ -351,11 +382,11 @@ void IssEngine::feed() {
   }
 }
 
-std::span<const std::uint8_t, 256> IssEngine::mailbox() const {
+std::span<const std::uint8_t, 256> IssCosimEngine::mailbox() const {
   return std::span<const std::uint8_t, 256>(host_->bus().mem.data() + sw8085::kMailbox, 256);
 }
 
-void IssEngine::collect() {
+void IssCosimEngine::collect() {
   auto& bus = host_->bus();
   for (const auto& w : bus.outs) {
     if (w.port != sw8085::kPortStep) continue;
@@ -381,7 +412,7 @@ void IssEngine::collect() {
   bus.outs.clear();
 }
 
-void IssEngine::cpu_thread() {
+void IssCosimEngine::cpu_thread() {
   while (true) {
     if (!active_ || !error_.empty()) {
       parked_ = true;
@@ -410,7 +441,7 @@ void IssEngine::cpu_thread() {
   }
 }
 
-void IssEngine::on_cmd() {
+void IssCosimEngine::on_cmd() {
   if (!active_) return;
   const bool level = i_cmd.read();
   host_->machine().set_rst75(level);
@@ -421,24 +452,14 @@ void IssEngine::on_cmd() {
   }
 }
 
-void IssEngine::end_case(EngineRun& run) {
+void IssCosimEngine::end_case(EngineRun& run) {
   active_ = false;
   stop_.notify(SC_ZERO_TIME);
   while (!parked_) sc_core::wait(parked_ev_);
   run.error = error_;
   run.overruns_known = true;
   run.overruns = host_->overruns();
-  run.position_known = true;
-  run.x = run.y = 0;
-  try {
-    if (const auto cur = current_move(mailbox(), host_->codes(), queued_, slot_move_)) {
-      run.x = moves_[cur->first].origin_x + cur->second.x;
-      run.y = moves_[cur->first].origin_y + cur->second.y;
-    }
-  } catch (const std::exception& e) {
-    run.position_known = false;
-    run.error += (run.error.empty() ? "" : "; ") + std::string("mailbox: ") + e.what();
-  }
+  read_final_position(mailbox(), host_->codes(), queued_, slot_move_, moves_, run);
 }
 
 // --- 8085: board8085 --------------------------------------------------------------
@@ -455,8 +476,8 @@ void write_rom_memh(const std::string& path) {
   if (!f) throw std::runtime_error(path + ": write failed");
 }
 
-BoardEngine::BoardEngine(sc_core::sc_module_name n, double f_clk_hz, const std::string& rom_memh)
-    : CosimEngine(n),
+BoardCosimEngine::BoardCosimEngine(sc_core::sc_module_name n, double f_clk_hz, const std::string& rom_memh)
+    : VerilatedCosimEngine(n),
       clk_("clk", sc_time::from_value(static_cast<sc_dt::uint64>(1e12 / f_clk_hz + 0.5))),
       codes_(std::make_unique<sw8085::Codes>(sw8085::Codes::from_symbols(sw8085::Program::builtin().symbols))) {
   const std::string plus = "+rom=" + rom_memh;
@@ -504,37 +525,18 @@ BoardEngine::BoardEngine(sc_core::sc_module_name n, double f_clk_hz, const std::
   SC_METHOD(on_clk);
   sensitive << clk_.posedge_event();
   dont_initialize();
-  SC_METHOD(on_step);
-  sensitive << step_x_ << step_y_;
-  dont_initialize();
+  watch_step_pins();
 }
 
-BoardEngine::~BoardEngine() { close_trace(); }
+BoardCosimEngine::~BoardCosimEngine() { close_trace(); }
 
-void BoardEngine::open_trace(const std::string& path) {
-  trace_ = std::make_unique<VerilatedFstSc>();
-  top_->trace(trace_.get(), 99);
-  trace_->open(path.c_str());
-}
-
-void BoardEngine::close_trace() {
-  if (trace_) trace_->close();
-  trace_.reset();
-}
+void BoardCosimEngine::trace_model(VerilatedFstSc& fst) { top_->trace(&fst, 99); }
 
 // The command input, registered into the board's clock domain (the board
 // wants it synchronous: it drives RST 7.5 and the edge counter).
-void BoardEngine::on_clk() { cmd_sync_.write(i_cmd.read()); }
+void BoardCosimEngine::on_clk() { cmd_sync_.write(i_cmd.read()); }
 
-void BoardEngine::on_step() {
-  const bool x = step_x_.read(), y = step_y_.read();
-  if (x && !last_x_) emit(step_pulse(Axis::X, dir_x_.read()));
-  if (y && !last_y_) emit(step_pulse(Axis::Y, dir_y_.read()));
-  last_x_ = x;
-  last_y_ = y;
-}
-
-void BoardEngine::poke(std::uint8_t addr, std::uint8_t v) {
+void BoardCosimEngine::poke(std::uint8_t addr, std::uint8_t v) {
   sc_core::wait(clk_.negedge_event());
   host_addr_.write(addr);
   host_wdata_.write(v);
@@ -543,14 +545,14 @@ void BoardEngine::poke(std::uint8_t addr, std::uint8_t v) {
   host_we_.write(false);
 }
 
-std::uint8_t BoardEngine::peek(std::uint8_t addr) {
+std::uint8_t BoardCosimEngine::peek(std::uint8_t addr) {
   sc_core::wait(clk_.negedge_event());
   host_addr_.write(addr);
   sc_core::wait(clk_.negedge_event());  // the read port answers one clock later
   return static_cast<std::uint8_t>(host_rdata_.read());
 }
 
-bool BoardEngine::slot_free(int i) {
+bool BoardCosimEngine::slot_free(int i) {
   // A finished slot is free once the program has left it (sw8085 host rule).
   if (slot_move_[i] < 0) return true;
   const std::uint8_t base = sw8085::kSlots[i];
@@ -559,7 +561,7 @@ bool BoardEngine::slot_free(int i) {
   return peek(sw8085::kActive) != base;
 }
 
-void BoardEngine::queue_next() {
+void BoardCosimEngine::queue_next() {
   const std::uint8_t base = sw8085::kSlots[next_slot_];
   std::array<std::uint8_t, 256> img{};
   auto sm = sw8085::encode(moves_[next_move_].move, base, *codes_, std::span<std::uint8_t, 256>(img));
@@ -575,7 +577,7 @@ void BoardEngine::queue_next() {
   ++next_move_;
 }
 
-void BoardEngine::host_thread() {
+void BoardCosimEngine::host_thread() {
   while (true) {
     if (request_ == Request::Begin) {
       try {
@@ -608,7 +610,7 @@ void BoardEngine::host_thread() {
   }
 }
 
-void BoardEngine::begin_case(const Case& c) {
+void BoardCosimEngine::begin_case(const Case& c) {
   moves_ = place(c.moves);
   next_move_ = 0;
   next_slot_ = 0;
@@ -620,7 +622,7 @@ void BoardEngine::begin_case(const Case& c) {
   sc_core::wait(reply_);
 }
 
-void BoardEngine::end_case(EngineRun& run) {
+void BoardCosimEngine::end_case(EngineRun& run) {
   request_ = Request::End;
   request_ev_.notify(SC_ZERO_TIME);
   sc_core::wait(reply_);
@@ -629,17 +631,7 @@ void BoardEngine::end_case(EngineRun& run) {
   const auto& mb = final_mailbox_;
   run.overruns_known = true;
   run.overruns = mb[sw8085::kOverruns] | mb[sw8085::kOverruns + 1] << 8 | mb[sw8085::kOverruns + 2] << 16;
-  run.position_known = true;
-  run.x = run.y = 0;
-  try {
-    if (const auto cur = current_move(std::span<const std::uint8_t, 256>(mb), *codes_, queued_, slot_move_)) {
-      run.x = moves_[cur->first].origin_x + cur->second.x;
-      run.y = moves_[cur->first].origin_y + cur->second.y;
-    }
-  } catch (const std::exception& e) {
-    run.position_known = false;
-    run.error += (run.error.empty() ? "" : "; ") + std::string("mailbox: ") + e.what();
-  }
+  read_final_position(std::span<const std::uint8_t, 256>(mb), *codes_, queued_, slot_move_, moves_, run);
 }
 
 }  // namespace contour::cosim

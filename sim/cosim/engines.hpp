@@ -4,14 +4,17 @@
 // before a train and end_case() after it, from its own thread; both may
 // wait() (bus accesses, reset).
 //
-//   model   the golden model (model/interp), one step per rising edge
-//   rtl     interp_top (rtl/interp) Verilated for SystemC, 50 MHz, command
-//           on its pin, moves pushed over Wishbone, step/dir pins observed
-//   iss     the 8085 program (sw8085/interp) on the C++ ISS, T-state timed
-//           at 3 MHz, command on RST 7.5 (sw8085::Host does the board)
-//   8085    board8085 (rtl/board8085 + rtl/cpu8085) Verilated for SystemC,
-//           3 MHz, command on RST 7.5 (synchronised), moves written through
-//           the mailbox port, step pins observed
+//   model   ModelCosimEngine: the golden model (model/interp) in an
+//           SC_MODULE, one step per rising edge
+//   rtl     CoreCosimEngine: interp_top (rtl/interp) Verilated for SystemC,
+//           50 MHz, command on its pin, moves pushed over Wishbone, step/dir
+//           pins observed
+//   iss     IssCosimEngine: the 8085 program (sw8085/interp) on the C++ ISS,
+//           T-state timed at 3 MHz, command on RST 7.5 (sw8085::Host does the
+//           board)
+//   8085    BoardCosimEngine: board8085 (rtl/board8085 + rtl/cpu8085)
+//           Verilated for SystemC, 3 MHz, command on RST 7.5 (synchronised),
+//           moves written through the mailbox port, step pins observed
 #pragma once
 
 #include <systemc>
@@ -112,10 +115,10 @@ class CosimEngine : public sc_core::sc_module {
 
 // --- model -----------------------------------------------------------------
 
-class ModelEngine final : public CosimEngine {
+class ModelCosimEngine final : public CosimEngine {
  public:
-  SC_HAS_PROCESS(ModelEngine);
-  explicit ModelEngine(sc_core::sc_module_name n);
+  SC_HAS_PROCESS(ModelCosimEngine);
+  explicit ModelCosimEngine(sc_core::sc_module_name n);
   std::string engine() const override { return "model"; }
   void begin_case(const Case& c) override;
   void end_case(EngineRun& run) override;
@@ -131,6 +134,31 @@ class ModelEngine final : public CosimEngine {
   bool active_ = false;
 };
 
+// --- the Verilated engines: step pins observed, an FST trace ------------------
+
+// What the two Verilated engines (rtl, 8085) share: their step/dir pins,
+// watched for rising step edges, and an FST trace of the Verilated model.
+class VerilatedCosimEngine : public CosimEngine {
+ public:
+  SC_HAS_PROCESS(VerilatedCosimEngine);
+  explicit VerilatedCosimEngine(sc_core::sc_module_name n);
+  ~VerilatedCosimEngine() override;
+  void open_trace(const std::string& path) override;
+  void close_trace() override;
+
+ protected:
+  // Emits a pulse on each rising edge of a step pin (call from the constructor).
+  void watch_step_pins();
+  // Adds the Verilated model to `fst`.
+  virtual void trace_model(VerilatedFstSc& fst) = 0;
+  sc_core::sc_signal<bool> step_x_{"step_x"}, dir_x_{"dir_x"}, step_y_{"step_y"}, dir_y_{"dir_y"};
+
+ private:
+  void on_step();
+  std::unique_ptr<VerilatedFstSc> trace_;
+  bool last_x_ = false, last_y_ = false;
+};
+
 // --- rtl: interp_top ---------------------------------------------------------
 
 // Output stage timing of interp_top, in core clocks (STEP_LEN etc.).
@@ -138,22 +166,20 @@ struct StepTiming {
   std::uint32_t len = 50, space = 50, setup = 10, hold = 10;  // 1 us / 1 us / 200 ns / 200 ns at 50 MHz
 };
 
-class CoreEngine final : public CosimEngine {
+class CoreCosimEngine final : public VerilatedCosimEngine {
  public:
-  SC_HAS_PROCESS(CoreEngine);
-  CoreEngine(sc_core::sc_module_name n, double f_clk_hz, StepTiming timing, bool free_clock);
-  ~CoreEngine() override;
+  SC_HAS_PROCESS(CoreCosimEngine);
+  CoreCosimEngine(sc_core::sc_module_name n, double f_clk_hz, StepTiming timing, bool free_clock);
+  ~CoreCosimEngine() override;
   std::string engine() const override { return "rtl"; }
   void begin_case(const Case& c) override;
   void end_case(EngineRun& run) override;
-  void open_trace(const std::string& path) override;
-  void close_trace() override;
   std::uint64_t clocks() const { return clocks_; }
 
  private:
+  void trace_model(VerilatedFstSc& fst) override;
   void clock_thread();
   void on_cmd();
-  void on_step();
   void keep_awake(std::uint64_t cycles);
   void wb_write(std::uint32_t adr, std::uint32_t v);
   std::uint32_t wb_read(std::uint32_t adr);
@@ -168,21 +194,18 @@ class CoreEngine final : public CosimEngine {
   std::uint64_t clocks_ = 0;
   sc_core::sc_signal<bool> clk_{"clk"}, rst_{"rst"}, cyc_{"cyc"}, stb_{"stb"}, we_{"we"}, ack_{"ack"};
   sc_core::sc_signal<std::uint32_t> adr_{"adr"}, wdat_{"wdat"}, rdat_{"rdat"};
-  sc_core::sc_signal<bool> step_x_{"step_x"}, dir_x_{"dir_x"}, step_y_{"step_y"}, dir_y_{"dir_y"};
   sc_core::sc_signal<bool> pulse_{"pulse"}, pulse_y_{"pulse_y"}, pulse_neg_{"pulse_neg"}, busy_{"busy"};
   std::unique_ptr<Vcosim_interp> top_;
-  std::unique_ptr<VerilatedFstSc> trace_;
-  bool last_x_ = false, last_y_ = false;
   std::vector<Placed> moves_;
 };
 
 // --- iss: the program on the C++ ISS ----------------------------------------
 
-class IssEngine final : public CosimEngine {
+class IssCosimEngine final : public CosimEngine {
  public:
-  SC_HAS_PROCESS(IssEngine);
-  IssEngine(sc_core::sc_module_name n, double f_clk_hz);
-  ~IssEngine() override;
+  SC_HAS_PROCESS(IssCosimEngine);
+  IssCosimEngine(sc_core::sc_module_name n, double f_clk_hz);
+  ~IssCosimEngine() override;
   std::string engine() const override { return "iss"; }
   void begin_case(const Case& c) override;
   void end_case(EngineRun& run) override;
@@ -210,21 +233,19 @@ class IssEngine final : public CosimEngine {
 
 // --- 8085: board8085 ---------------------------------------------------------
 
-class BoardEngine final : public CosimEngine {
+class BoardCosimEngine final : public VerilatedCosimEngine {
  public:
-  SC_HAS_PROCESS(BoardEngine);
-  BoardEngine(sc_core::sc_module_name n, double f_clk_hz, const std::string& rom_memh);
-  ~BoardEngine() override;
+  SC_HAS_PROCESS(BoardCosimEngine);
+  BoardCosimEngine(sc_core::sc_module_name n, double f_clk_hz, const std::string& rom_memh);
+  ~BoardCosimEngine() override;
   std::string engine() const override { return "8085"; }
   void begin_case(const Case& c) override;
   void end_case(EngineRun& run) override;
-  void open_trace(const std::string& path) override;
-  void close_trace() override;
 
  private:
+  void trace_model(VerilatedFstSc& fst) override;
   void host_thread();
   void on_clk();
-  void on_step();
   void poke(std::uint8_t addr, std::uint8_t v);
   std::uint8_t peek(std::uint8_t addr);
   void queue_next();
@@ -234,15 +255,13 @@ class BoardEngine final : public CosimEngine {
   sc_core::sc_signal<bool> rst_{"rst"}, cmd_sync_{"cmd_sync"}, zero_{"zero"};
   sc_core::sc_signal<std::uint32_t> intr_vec_{"intr_vec"}, host_addr_{"host_addr"}, host_wdata_{"host_wdata"};
   sc_core::sc_signal<bool> host_we_{"host_we"};
-  sc_core::sc_signal<bool> step_x_{"step_x"}, step_y_{"step_y"}, step_z_{"step_z"}, dir_x_{"dir_x"},
-      dir_y_{"dir_y"}, dir_z_{"dir_z"}, debug_we_{"debug_we"}, host_ovr_{"host_ovr"}, cpu_wr_{"cpu_wr"},
+  sc_core::sc_signal<bool> step_z_{"step_z"}, dir_z_{"dir_z"}, debug_we_{"debug_we"}, host_ovr_{"host_ovr"}, cpu_wr_{"cpu_wr"},
       cpu_io_{"cpu_io"}, retire_{"retire"}, halted_{"halted"}, ie_{"ie"}, sod_{"sod"};
   sc_core::sc_signal<std::uint32_t> done_{"done"}, debug_{"debug"}, host_rdata_{"host_rdata"}, cpu_dout_{"cpu_dout"},
       dbg_kind_{"dbg_kind"}, dbg_irq_{"dbg_irq"}, dbg_op_{"dbg_op"}, cpu_addr_{"cpu_addr"}, dbg_ipc_{"dbg_ipc"},
       dbg_pc_{"dbg_pc"}, dbg_sp_{"dbg_sp"};
   sc_core::sc_signal<std::uint64_t> dbg_regs_{"dbg_regs"};
   std::unique_ptr<Vcosim_board> top_;
-  std::unique_ptr<VerilatedFstSc> trace_;
   std::unique_ptr<sw8085::Codes> codes_;
   std::vector<Placed> moves_;
   std::size_t next_move_ = 0;
@@ -256,7 +275,6 @@ class BoardEngine final : public CosimEngine {
   std::array<std::uint8_t, 256> final_mailbox_{};
   bool active_ = false;  // the host refills slots
   std::string error_;
-  bool last_x_ = false, last_y_ = false;
 };
 
 // Writes the built-in program's ROM image as a $readmemh file (8192 lines).

@@ -30,10 +30,10 @@ int sc_main(int argc, char** argv) {
     return 2;
   }
   try {
-    const Outcome out = run_cosim(opt);
+    const CosimOutcome out = run_cosim(opt);
     std::printf("%s\n", verdict_line(out.rows).c_str());
     for (const auto& r : out.rows)
-      if (!r.passed())
+      if (!r.acceptable())
         std::printf("FAIL %s %s @ %s pps: %s\n", r.case_name.c_str(), r.engine.c_str(), rate_label(r.rate_pps).c_str(),
                     r.note.c_str());
     for (const auto& f : out.files) std::printf("wrote %s\n", f.c_str());

@@ -54,103 +54,159 @@ std::string usage() {
          "  every required equivalence holds (docs/cosim.md).\n";
 }
 
-Options parse_options(const std::vector<std::string>& args, bool& help) {
+namespace {
+
+// One parse of the arguments: the options so far, the argument at hand,
+// and the command line to show in the report (the arguments as understood).
+struct Parse {
+  explicit Parse(const std::vector<std::string>& a) : args(a) {}
+  const std::vector<std::string>& args;
+  std::size_t i = 0;
+  std::string name, inline_value;  // --name=value: the value is inline
+  bool has_inline = false;
   Options o;
-  help = false;
   bool have_suite = false, sweep = false, progress_set = false;
   std::vector<std::string> cmd = {"contour", "cosim"};
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    std::string a = args[i], val;
-    bool has_val = false;
-    if (const auto eq = a.find('='); a.rfind("--", 0) == 0 && eq != std::string::npos) {
-      val = a.substr(eq + 1);
-      a = a.substr(0, eq);
-      has_val = true;
+
+  // Splits args[i] into its name and inline value.
+  void read_name() {
+    name = args[i];
+    inline_value.clear();
+    has_inline = false;
+    if (const auto eq = name.find('='); name.rfind("--", 0) == 0 && eq != std::string::npos) {
+      inline_value = name.substr(eq + 1);
+      name = name.substr(0, eq);
+      has_inline = true;
     }
-    auto value = [&]() -> std::string {
-      if (has_val) return val;
-      if (i + 1 >= args.size()) throw UsageError(a + ": missing value");
-      return args[++i];
-    };
-    if (a == "-h" || a == "--help") {
+  }
+  // The argument's value: inline, or the next argument.
+  std::string value() {
+    if (has_inline) return inline_value;
+    if (i + 1 >= args.size()) throw UsageError(name + ": missing value");
+    return args[++i];
+  }
+};
+
+void parse_suite(Parse& p) {
+  p.o.suite = p.value();
+  try {
+    combined(p.o.suite);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--suite: ") + e.what());
+  }
+  p.have_suite = true;
+  p.cmd.push_back("--suite " + p.o.suite);
+}
+
+void parse_rates(Parse& p) {
+  const std::string v = p.value();
+  for (const auto& r : split(v)) p.o.rates.push_back(parse_rate(r, "--rate"));
+  if (p.o.rates.empty()) throw UsageError("--rate: empty");
+  p.cmd.push_back("--rate " + v);
+}
+
+void parse_report_dir(Parse& p) {
+  p.o.report_dir = p.value();
+  if (p.o.report_dir.empty()) throw UsageError("--report: empty directory name");
+  p.cmd.push_back("--report " + p.o.report_dir);
+}
+
+void parse_engines(Parse& p) {
+  const std::string v = p.value();
+  p.o.engines.clear();
+  for (const auto& e : split(v)) {
+    bool known = false;
+    for (const auto& n : engine_names()) known |= n == e;
+    if (!known) throw UsageError("--engines: unknown engine '" + e + "' (known: model,rtl,iss,8085)");
+    p.o.engines.insert(e);
+  }
+  if (!p.o.engines.count("model")) p.o.engines.insert("model");  // the reference always runs
+  p.cmd.push_back("--engines " + v);
+}
+
+void parse_cases(Parse& p) {
+  const std::string v = p.value();
+  for (const auto& c : split(v)) p.o.cases.push_back(c);
+  p.cmd.push_back("--case " + v);
+}
+
+void parse_injection(Parse& p) {
+  const std::string v = p.value();
+  try {
+    p.o.faults.push_back(parse_fault(v));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  p.cmd.push_back("--inject " + v);
+}
+
+// A flag without a value: sets `on` and shows in the command line.
+void parse_flag(Parse& p, bool& on) {
+  on = true;
+  p.cmd.push_back(p.name);
+}
+
+// --progress or --no-progress (neither: a bar when stderr is a terminal).
+void parse_progress(Parse& p) {
+  p.o.progress = p.name == "--progress";
+  p.progress_set = true;
+}
+
+void parse_step_clocks(Parse& p, std::uint32_t& clocks) {
+  clocks = parse_clocks(p.value(), p.name);
+  p.cmd.push_back(p.name + " " + std::to_string(clocks));
+}
+
+// Parses args[p.i] (and its value); false for -h/--help.
+bool parse_argument(Parse& p) {
+  const std::string& a = p.name;
+  if (a == "-h" || a == "--help") return false;
+  if (a == "--suite") parse_suite(p);
+  else if (a == "--rate") parse_rates(p);
+  else if (a == "--sweep") parse_flag(p, p.sweep);
+  else if (a == "--report") parse_report_dir(p);
+  else if (a == "--trace") parse_flag(p, p.o.trace);
+  else if (a == "--engines") parse_engines(p);
+  else if (a == "--case") parse_cases(p);
+  else if (a == "--inject") parse_injection(p);
+  else if (a == "--free-clock") parse_flag(p, p.o.free_clock);
+  else if (a == "--progress" || a == "--no-progress") parse_progress(p);
+  else if (a == "--step-len") parse_step_clocks(p, p.o.timing.len);
+  else if (a == "--step-space") parse_step_clocks(p, p.o.timing.space);
+  else throw UsageError("unknown argument '" + p.args[p.i] + "' (see contour cosim --help)");
+  return true;
+}
+
+// What no single argument can check: a suite, exactly one of --rate and
+// --sweep, and cases the suite has.
+void check_complete(const Parse& p) {
+  if (!p.have_suite) throw UsageError("--suite is required (paper, smoke or full)");
+  if (p.sweep == !p.o.rates.empty()) throw UsageError("give exactly one of --rate R and --sweep");
+  if (p.o.cases.empty()) return;
+  const Suite s = combined(p.o.suite);
+  for (const auto& c : p.o.cases) {
+    bool found = false;
+    for (const auto& sc : s.cases) found |= sc.name == c;
+    if (!found) throw UsageError("--case: suite " + p.o.suite + " has no case '" + c + "'");
+  }
+}
+
+}  // namespace
+
+Options parse_options(const std::vector<std::string>& args, bool& help) {
+  Parse p(args);
+  help = false;
+  for (; p.i < args.size(); ++p.i) {
+    p.read_name();
+    if (!parse_argument(p)) {
       help = true;
-      return o;
-    } else if (a == "--suite") {
-      o.suite = value();
-      try {
-        combined(o.suite);
-      } catch (const std::invalid_argument& e) {
-        throw UsageError(std::string("--suite: ") + e.what());
-      }
-      have_suite = true;
-      cmd.push_back("--suite " + o.suite);
-    } else if (a == "--rate") {
-      const std::string v = value();
-      for (const auto& r : split(v)) o.rates.push_back(parse_rate(r, "--rate"));
-      if (o.rates.empty()) throw UsageError("--rate: empty");
-      cmd.push_back("--rate " + v);
-    } else if (a == "--sweep") {
-      sweep = true;
-      cmd.push_back("--sweep");
-    } else if (a == "--report") {
-      o.report_dir = value();
-      if (o.report_dir.empty()) throw UsageError("--report: empty directory name");
-      cmd.push_back("--report " + o.report_dir);
-    } else if (a == "--trace") {
-      o.trace = true;
-      cmd.push_back("--trace");
-    } else if (a == "--engines") {
-      const std::string v = value();
-      o.engines.clear();
-      for (const auto& e : split(v)) {
-        bool known = false;
-        for (const auto& n : engine_names()) known |= n == e;
-        if (!known) throw UsageError("--engines: unknown engine '" + e + "' (known: model,rtl,iss,8085)");
-        o.engines.insert(e);
-      }
-      if (!o.engines.count("model")) o.engines.insert("model");  // the reference always runs
-      cmd.push_back("--engines " + v);
-    } else if (a == "--case") {
-      const std::string v = value();
-      for (const auto& c : split(v)) o.cases.push_back(c);
-      cmd.push_back("--case " + v);
-    } else if (a == "--inject") {
-      const std::string v = value();
-      try {
-        o.faults.push_back(parse_fault(v));
-      } catch (const std::invalid_argument& e) {
-        throw UsageError(e.what());
-      }
-      cmd.push_back("--inject " + v);
-    } else if (a == "--free-clock") {
-      o.free_clock = true;
-      cmd.push_back("--free-clock");
-    } else if (a == "--progress" || a == "--no-progress") {
-      o.progress = a == "--progress";
-      progress_set = true;
-    } else if (a == "--step-len") {
-      o.timing.len = parse_clocks(value(), "--step-len");
-      cmd.push_back("--step-len " + std::to_string(o.timing.len));
-    } else if (a == "--step-space") {
-      o.timing.space = parse_clocks(value(), "--step-space");
-      cmd.push_back("--step-space " + std::to_string(o.timing.space));
-    } else {
-      throw UsageError("unknown argument '" + args[i] + "' (see contour cosim --help)");
+      return p.o;
     }
   }
-  if (!have_suite) throw UsageError("--suite is required (paper, smoke or full)");
-  if (sweep == !o.rates.empty()) throw UsageError("give exactly one of --rate R and --sweep");
-  if (!o.cases.empty()) {
-    const Suite s = combined(o.suite);
-    for (const auto& c : o.cases) {
-      bool found = false;
-      for (const auto& sc : s.cases) found |= sc.name == c;
-      if (!found) throw UsageError("--case: suite " + o.suite + " has no case '" + c + "'");
-    }
-  }
-  if (!progress_set) o.progress = ::isatty(2);
-  for (std::size_t i = 0; i < cmd.size(); ++i) o.command_line += (i ? " " : "") + cmd[i];
-  return o;
+  check_complete(p);
+  if (!p.progress_set) p.o.progress = ::isatty(2);
+  for (std::size_t i = 0; i < p.cmd.size(); ++i) p.o.command_line += (i ? " " : "") + p.cmd[i];
+  return p.o;
 }
 
 }  // namespace contour::cosim

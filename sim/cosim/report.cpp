@@ -199,20 +199,29 @@ pre{background:#f7f7f7;border:1px solid #ddd;padding:8px;font-size:12px;overflow
 }
 
 std::string cell_text(const Row& r) {
-  std::string t = r.verdict;
+  std::string t = to_string(r.verdict);
   if (r.lost > 0 || r.overruns > 0) t += " " + std::to_string(r.lost) + "/" + std::to_string(r.overruns);
   if (r.mismatches > 0) t += " &#8800;" + std::to_string(r.mismatches);
+  return t;
+}
+
+// Rows counted as the verdict line counts them: acceptable() ones passed.
+struct Tally {
+  std::size_t passed = 0, failed = 0;
+};
+Tally tally(const std::vector<Row>& rows) {
+  Tally t;
+  for (const auto& r : rows) (r.acceptable() ? t.passed : t.failed)++;
   return t;
 }
 
 }  // namespace
 
 std::string verdict_line(const std::vector<Row>& rows) {
-  std::size_t pass = 0, fail = 0;
-  for (const auto& r : rows) (r.passed() ? pass : fail)++;
-  const double pct = rows.empty() ? 0.0 : 100.0 * double(pass) / double(rows.size());
-  return fmt("%.2f%%", pct) + (fail == 0 && pass > 0 ? " PASS " : " FAIL ") + std::to_string(pass) + " PASSED, " +
-         std::to_string(fail) + " FAILED";
+  const Tally t = tally(rows);
+  const double pct = rows.empty() ? 0.0 : 100.0 * double(t.passed) / double(rows.size());
+  return fmt("%.2f%%", pct) + (t.failed == 0 && t.passed > 0 ? " PASS " : " FAIL ") + std::to_string(t.passed) +
+         " PASSED, " + std::to_string(t.failed) + " FAILED";
 }
 
 Limit limit_of(const std::vector<Row>& rows, const std::string& case_name, const std::string& engine) {
@@ -231,100 +240,96 @@ Limit limit_of(const std::vector<Row>& rows, const std::string& case_name, const
   return l;
 }
 
-std::vector<std::string> write_reports(const std::string& dir, const ReportInput& in) {
-  std::vector<std::string> written;
-  const std::string verdict = verdict_line(in.rows);
+namespace {
+
+// --- report.json ---------------------------------------------------------------
+
+std::string json_latency(const Row& r) {
+  if (!r.has_latency) return ", \"latency_us\": null";
+  return ", \"latency_us\": {\"min\": " + fmt("%.4f", r.lat_min_us) + ", \"mean\": " + fmt("%.4f", r.lat_mean_us) +
+         ", \"max\": " + fmt("%.4f", r.lat_max_us) + ", \"exact\": " + (r.latency_exact ? "true" : "false") + "}";
+}
+
+std::string json_divergence(const Row& r) {
+  if (!r.divergence) return ", \"first_divergence\": null";
+  return ", \"first_divergence\": {\"pulse\": " + std::to_string(r.divergence->index) +
+         ", \"summary\": " + json_str(r.divergence->summary) + "}";
+}
+
+void write_json_result(std::ostream& j, const Row& r) {
+  j << "    {\"case\": " << json_str(r.case_name) << ", \"engine\": " << json_str(r.engine)
+    << ", \"rate_pps\": " << fmt("%.0f", r.rate_pps) << ", \"pulses\": " << r.pulses
+    << ", \"mismatches\": " << r.mismatches << ", \"lost\": " << r.lost << ", \"overruns\": " << r.overruns
+    << ", \"verdict\": " << json_str(to_string(r.verdict)) << ", \"expected\": " << r.expected
+    << ", \"commands\": " << r.commands << ", \"required\": " << (r.required ? "true" : "false");
+  j << json_latency(r) << json_divergence(r) << ", \"note\": " << json_str(r.note) << "}";
+}
+
+void write_json_limits(std::ostream& j, const ReportInput& in, const std::vector<std::string>& engines) {
+  bool first = true;
+  for (const auto& c : in.cases)
+    for (const auto& e : engines) {
+      const Limit l = limit_of(in.rows, c.name, e);
+      j << (first ? "" : ",\n") << "    {\"case\": " << json_str(c.name) << ", \"engine\": " << json_str(e)
+        << ", \"agrees_up_to_pps\": " << fmt("%.0f", l.agree_up_to) << ", \"first_loss_pps\": "
+        << (l.first_loss > 0 ? fmt("%.0f", l.first_loss) : std::string("null")) << "}";
+      first = false;
+    }
+}
+
+std::string report_json(const ReportInput& in, const std::string& verdict, const std::vector<std::string>& engines) {
+  std::ostringstream j;
+  const Tally t = tally(in.rows);
+  j << "{\n  \"verdict\": " << json_str(verdict) << ",\n  \"suite\": " << json_str(in.suite)
+    << ",\n  \"passed\": " << t.passed << ",\n  \"failed\": " << t.failed << ",\n  \"command\": " << json_str(in.command)
+    << ",\n  \"sim_seconds\": " << fmt("%.6f", in.sim_seconds) << ",\n  \"results\": [\n";
+  for (std::size_t i = 0; i < in.rows.size(); ++i) {
+    write_json_result(j, in.rows[i]);
+    j << (i + 1 < in.rows.size() ? "," : "") << "\n";
+  }
+  j << "  ],\n  \"limits\": [\n";
+  write_json_limits(j, in, engines);
+  j << "\n  ]\n}\n";
+  return j.str();
+}
+
+// --- junit.xml -----------------------------------------------------------------
+
+void write_testcase(std::ostream& x, const std::string& suite, const Row& r) {
+  x << "    <testcase classname=\"cosim." << xml_attr(suite + "." + r.case_name) << "\" name=\""
+    << xml_attr(r.engine + "@" + rate_label(r.rate_pps)) << "\"";
+  if (r.acceptable()) {
+    x << ">";
+    if (!r.note.empty()) x << "<system-out>" << escape(r.note) << "</system-out>";
+    x << "</testcase>\n";
+  } else {
+    x << ">\n      <failure message=\"" << xml_attr(r.note) << "\">"
+      << escape(r.divergence ? r.divergence->context : r.note) << "</failure>\n    </testcase>\n";
+  }
+}
+
+std::string junit_xml(const ReportInput& in) {
+  std::ostringstream x;
+  const std::size_t fail = tally(in.rows).failed;
+  x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"contour cosim\" tests=\"" << in.rows.size()
+    << "\" failures=\"" << fail << "\">\n  <testsuite name=\"cosim." << xml_attr(in.suite) << "\" tests=\""
+    << in.rows.size() << "\" failures=\"" << fail << "\" time=\"" << fmt("%.3f", in.wall_seconds) << "\">\n";
+  for (const auto& r : in.rows) write_testcase(x, in.suite, r);
+  x << "  </testsuite>\n</testsuites>\n";
+  return x.str();
+}
+
+// --- report.html ---------------------------------------------------------------
+
+void write_html_head(std::ostream& h, const ReportInput& in, const std::string& verdict,
+                     const std::vector<std::string>& engines) {
   const bool ok = verdict.find(" PASS ") != std::string::npos;
-  std::vector<std::string> engines;
-  for (const auto& e : engine_names())
-    for (const auto& r : in.rows)
-      if (r.engine == e) {
-        engines.push_back(e);
-        break;
-      }
-
-  // --- report.json ---------------------------------------------------------------
-  {
-    std::ostringstream j;
-    std::size_t pass = 0, fail = 0;
-    for (const auto& r : in.rows) (r.passed() ? pass : fail)++;
-    j << "{\n  \"verdict\": " << json_str(verdict) << ",\n  \"suite\": " << json_str(in.suite)
-      << ",\n  \"passed\": " << pass << ",\n  \"failed\": " << fail << ",\n  \"command\": " << json_str(in.command)
-      << ",\n  \"sim_seconds\": " << fmt("%.6f", in.sim_seconds) << ",\n  \"results\": [\n";
-    for (std::size_t i = 0; i < in.rows.size(); ++i) {
-      const Row& r = in.rows[i];
-      j << "    {\"case\": " << json_str(r.case_name) << ", \"engine\": " << json_str(r.engine)
-        << ", \"rate_pps\": " << fmt("%.0f", r.rate_pps) << ", \"pulses\": " << r.pulses
-        << ", \"mismatches\": " << r.mismatches << ", \"lost\": " << r.lost << ", \"overruns\": " << r.overruns
-        << ", \"verdict\": " << json_str(r.verdict) << ", \"expected\": " << r.expected
-        << ", \"commands\": " << r.commands << ", \"required\": " << (r.required ? "true" : "false");
-      if (r.has_latency)
-        j << ", \"latency_us\": {\"min\": " << fmt("%.4f", r.lat_min_us) << ", \"mean\": " << fmt("%.4f", r.lat_mean_us)
-          << ", \"max\": " << fmt("%.4f", r.lat_max_us) << ", \"exact\": " << (r.latency_exact ? "true" : "false")
-          << "}";
-      else
-        j << ", \"latency_us\": null";
-      if (r.divergence)
-        j << ", \"first_divergence\": {\"pulse\": " << r.divergence->index
-          << ", \"summary\": " << json_str(r.divergence->summary) << "}";
-      else
-        j << ", \"first_divergence\": null";
-      j << ", \"note\": " << json_str(r.note) << "}" << (i + 1 < in.rows.size() ? "," : "") << "\n";
-    }
-    j << "  ],\n  \"limits\": [\n";
-    bool first = true;
-    for (const auto& c : in.cases)
-      for (const auto& e : engines) {
-        const Limit l = limit_of(in.rows, c.name, e);
-        j << (first ? "" : ",\n") << "    {\"case\": " << json_str(c.name) << ", \"engine\": " << json_str(e)
-          << ", \"agrees_up_to_pps\": " << fmt("%.0f", l.agree_up_to) << ", \"first_loss_pps\": "
-          << (l.first_loss > 0 ? fmt("%.0f", l.first_loss) : std::string("null")) << "}";
-        first = false;
-      }
-    j << "\n  ]\n}\n";
-    const std::string path = dir + "/report.json";
-    std::ofstream f(path);
-    f << j.str();
-    if (!f) throw std::runtime_error(path + ": write failed");
-    written.push_back(path);
-  }
-
-  // --- junit.xml ---------------------------------------------------------------------
-  {
-    std::ostringstream x;
-    std::size_t fail = 0;
-    for (const auto& r : in.rows) fail += !r.passed();
-    x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"contour cosim\" tests=\"" << in.rows.size()
-      << "\" failures=\"" << fail << "\">\n  <testsuite name=\"cosim." << xml_attr(in.suite) << "\" tests=\""
-      << in.rows.size() << "\" failures=\"" << fail << "\" time=\"" << fmt("%.3f", in.wall_seconds) << "\">\n";
-    for (const auto& r : in.rows) {
-      x << "    <testcase classname=\"cosim." << xml_attr(in.suite + "." + r.case_name) << "\" name=\""
-        << xml_attr(r.engine + "@" + rate_label(r.rate_pps)) << "\"";
-      if (r.passed()) {
-        x << ">";
-        if (!r.note.empty()) x << "<system-out>" << escape(r.note) << "</system-out>";
-        x << "</testcase>\n";
-      } else {
-        x << ">\n      <failure message=\"" << xml_attr(r.note) << "\">"
-          << escape(r.divergence ? r.divergence->context : r.note) << "</failure>\n    </testcase>\n";
-      }
-    }
-    x << "  </testsuite>\n</testsuites>\n";
-    const std::string path = dir + "/junit.xml";
-    std::ofstream f(path);
-    f << x.str();
-    if (!f) throw std::runtime_error(path + ": write failed");
-    written.push_back(path);
-  }
-
-  // --- report.html ----------------------------------------------------------------------
-  std::ostringstream h;
   h << "<!-- " << verdict << " -->\n<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
     << "<title>contour cosim " << escape(in.suite) << ": " << escape(verdict) << "</title><style>" << css()
     << "</style></head><body>\n";
   h << "<h1 class=\"" << (ok ? "pass" : "fail") << "\">" << escape(verdict) << "</h1>\n";
   h << "<p class=\"meta\">Suite <b>" << escape(in.suite) << "</b>: " << in.cases.size() << " case(s) &times; "
-    << in.rates.size() << " rate(s), engines " ;
+    << in.rates.size() << " rate(s), engines ";
   for (std::size_t i = 0; i < engines.size(); ++i) h << (i ? ", " : "") << "<b>" << escape(engines[i]) << "</b>";
   h << ". Simulated " << fmt("%.3f", in.sim_seconds) << " s of SystemC time in " << fmt("%.1f", in.wall_seconds)
     << " s.<br>Command: <code>" << escape(in.command) << "</code><br>"
@@ -332,20 +337,24 @@ std::vector<std::string> write_reports(const std::string& dir, const ReportInput
     << ", STEP_SPACE " << in.opt.timing.space << ", DIR_SETUP " << in.opt.timing.setup << ", DIR_HOLD "
     << in.opt.timing.hold << " clocks), 8085 " << fmt("%g", in.opt.cpu_hz / 1e6) << " MHz. "
     << "The 8085 engines run up to " << rate_label(kMaxRate8085) << " pps.</p>\n";
+}
 
-  h << "<h2>How to read this</h2><p class=\"meta\">Every engine gets the same command pulse train (N pulses at the "
-       "rate, N = the model's output pulse count). Its output pulses are compared one by one with the golden "
-       "model's (axis, sign, order); <b>lost</b> = command pulses that gave no output pulse, <b>overruns</b> = the "
-       "ones the engine itself flagged (core: OVR_COUNT; 8085 program: the mailbox overrun count). "
-       "<b>PASS</b>: identical pulses, nothing lost. <b>FLAGGED</b>: the pulses given are the model's, and every "
-       "lost command pulse was flagged (allowed above an engine's limit). <b>FAIL</b>: a pulse differs, a loss was "
-       "not flagged, the final position is wrong, or an engine lost pulses where it must keep up (the core up to "
-       + rate_label(kCoreRequiredRate) + " pps, the 8085 up to " + rate_label(kRequiredRate8085) +
-       " pps). Cells read <i>verdict lost/overruns</i>. In a divergence, <i>at (x, y)</i> is the position on the case's "
-       "path (its start is (0, 0)); the states are in the move's own frame (a line from its start, an arc from its "
-       "centre), as in docs/algorithm.md.</p>\n";
+std::string how_to_read() {
+  return "<h2>How to read this</h2><p class=\"meta\">Every engine gets the same command pulse train (N pulses at the "
+         "rate, N = the model's output pulse count). Its output pulses are compared one by one with the golden "
+         "model's (axis, sign, order); <b>lost</b> = command pulses that gave no output pulse, <b>overruns</b> = the "
+         "ones the engine itself flagged (core: OVR_COUNT; 8085 program: the mailbox overrun count). "
+         "<b>PASS</b>: identical pulses, nothing lost. <b>FLAGGED</b>: the pulses given are the model's, and every "
+         "lost command pulse was flagged (allowed above an engine's limit). <b>FAIL</b>: a pulse differs, a loss was "
+         "not flagged, the final position is wrong, or an engine lost pulses where it must keep up (the core up to "
+         + rate_label(kCoreRequiredRate) + " pps, the 8085 up to " + rate_label(kRequiredRate8085) +
+         " pps). Cells read <i>verdict lost/overruns</i>. In a divergence, <i>at (x, y)</i> is the position on the "
+         "case's path (its start is (0, 0)); the states are in the move's own frame (a line from its start, an arc "
+         "from its centre), as in docs/algorithm.md.</p>\n";
+}
 
-  // Limits.
+// Where each engine falls behind: a table and the lost-pulse plots.
+void write_html_limits(std::ostream& h, const ReportInput& in, const std::vector<std::string>& engines) {
   h << "<h2>Where each engine falls behind</h2>\n<table><tr><th class=\"l\">case</th>";
   for (const auto& e : engines) h << "<th>" << escape(e) << ": agrees up to</th><th>first loss</th>";
   h << "</tr>\n";
@@ -360,15 +369,15 @@ std::vector<std::string> write_reports(const std::string& dir, const ReportInput
   }
   h << "</table>\n<p class=\"meta\">Paper A (Table 1): the 8085 at 3 MHz kept up to 4.0 kpps (linear) and 3.0 kpps "
        "(circular); a dedicated processor was expected to reach 250 kpps.</p>\n";
-
   h << "<div class=\"plots\">" << lost_all_svg(in.rows) << "</div>\n<div class=\"plots\">\n";
   for (const auto& c : in.cases) h << lost_svg(c.name, in.rows) << "\n";
   h << "</div>\n";
+}
 
-  // Failures.
+void write_html_failures(std::ostream& h, const std::vector<Row>& rows) {
   std::vector<const Row*> failed;
-  for (const auto& r : in.rows)
-    if (!r.passed()) failed.push_back(&r);
+  for (const auto& r : rows)
+    if (!r.acceptable()) failed.push_back(&r);
   h << "<h2>Failures (" << failed.size() << ")</h2>\n";
   if (failed.empty()) h << "<p>None.</p>\n";
   for (const Row* r : failed) {
@@ -376,68 +385,121 @@ std::vector<std::string> write_reports(const std::string& dir, const ReportInput
       << " pps</h3><p>" << escape(r->note) << "</p>\n";
     if (r->divergence) h << "<pre>" << escape(r->divergence->context) << "</pre>\n";
   }
+}
 
-  // Per case.
-  h << "<h2>Cases</h2>\n";
-  for (std::size_t ci = 0; ci < in.cases.size(); ++ci) {
-    const Case& c = in.cases[ci];
-    h << "<h3 id=\"" << escape(c.name) << "\">" << escape(c.name) << ": " << escape(c.title) << "</h3>\n<p class=\"meta\">";
-    for (std::size_t i = 0; i < c.moves.size(); ++i) h << (i ? ", " : "") << "<code>" << escape(describe(c.moves[i])) << "</code>";
-    h << "; " << in.exps[ci].pulses.size() << " output pulses.</p>\n<table><tr><th>rate (pps)</th>";
-    for (const auto& e : engines) h << "<th>" << escape(e) << "</th>";
-    h << "<th>rtl latency (us)</th><th>8085 latency (us)</th></tr>\n";
-    for (double rate : in.rates) {
-      h << "<tr><td>" << rate_label(rate) << "</td>";
-      const Row* lat[2] = {nullptr, nullptr};
-      for (const auto& e : engines) {
-        const Row* found = nullptr;
-        for (const auto& r : in.rows)
-          if (r.case_name == c.name && r.engine == e && r.rate_pps == rate) found = &r;
-        if (!found) {
-          h << "<td class=\"na\">-</td>";
-          continue;
-        }
-        if (e == "rtl") lat[0] = found;
-        if (e == "8085") lat[1] = found;
-        h << "<td class=\"" << found->verdict << "\" title=\"" << xml_attr(found->note) << "\">" << cell_text(*found)
-          << "</td>";
-      }
-      for (const Row* r : lat) {
-        if (r && r->has_latency)
-          h << "<td>" << fmt("%.3f", r->lat_min_us) << " / " << fmt("%.3f", r->lat_mean_us) << " / "
-            << fmt("%.3f", r->lat_max_us) << (r->latency_exact ? "" : "*") << "</td>";
-        else
-          h << "<td class=\"na\">-</td>";
-      }
-      h << "</tr>\n";
+const Row* find_row(const std::vector<Row>& rows, const std::string& case_name, const std::string& engine,
+                    double rate) {
+  const Row* found = nullptr;
+  for (const auto& r : rows)
+    if (r.case_name == case_name && r.engine == engine && r.rate_pps == rate) found = &r;
+  return found;
+}
+
+std::string latency_cell(const Row* r) {
+  if (!r || !r->has_latency) return "<td class=\"na\">-</td>";
+  return "<td>" + fmt("%.3f", r->lat_min_us) + " / " + fmt("%.3f", r->lat_mean_us) + " / " +
+         fmt("%.3f", r->lat_max_us) + (r->latency_exact ? "" : "*") + "</td>";
+}
+
+// One rate of a case: each engine's verdict, then the rtl and 8085 latencies.
+void write_rate_row(std::ostream& h, const ReportInput& in, const Case& c, double rate,
+                    const std::vector<std::string>& engines) {
+  h << "<tr><td>" << rate_label(rate) << "</td>";
+  const Row* lat[2] = {nullptr, nullptr};
+  for (const auto& e : engines) {
+    const Row* found = find_row(in.rows, c.name, e, rate);
+    if (!found) {
+      h << "<td class=\"na\">-</td>";
+      continue;
     }
-    h << "</table>\n<p class=\"meta\">Latency: min / mean / max from a command pulse's rising edge to its output "
-         "step pulse; * = pulses were lost, measured from the latest command pulse.</p>\n";
-    std::vector<const Row*> diverged;
-    for (const auto& r : in.rows)
-      if (r.case_name == c.name && r.divergence) diverged.push_back(&r);
-    h << "<div class=\"plots\">" << path_svg(c, in.exps[ci], diverged) << deviation_svg(c, in.exps[ci]) << "</div>\n";
+    if (e == "rtl") lat[0] = found;
+    if (e == "8085") lat[1] = found;
+    h << "<td class=\"" << to_string(found->verdict) << "\" title=\"" << xml_attr(found->note) << "\">"
+      << cell_text(*found) << "</td>";
   }
+  for (const Row* r : lat) h << latency_cell(r);
+  h << "</tr>\n";
+}
 
-  // Everything, for the record.
-  h << "<h2>All results</h2>\n<details><summary>" << in.rows.size()
+void write_html_case(std::ostream& h, const ReportInput& in, std::size_t ci, const std::vector<std::string>& engines) {
+  const Case& c = in.cases[ci];
+  h << "<h3 id=\"" << escape(c.name) << "\">" << escape(c.name) << ": " << escape(c.title)
+    << "</h3>\n<p class=\"meta\">";
+  for (std::size_t i = 0; i < c.moves.size(); ++i)
+    h << (i ? ", " : "") << "<code>" << escape(describe(c.moves[i])) << "</code>";
+  h << "; " << in.exps[ci].pulses.size() << " output pulses.</p>\n<table><tr><th>rate (pps)</th>";
+  for (const auto& e : engines) h << "<th>" << escape(e) << "</th>";
+  h << "<th>rtl latency (us)</th><th>8085 latency (us)</th></tr>\n";
+  for (double rate : in.rates) write_rate_row(h, in, c, rate, engines);
+  h << "</table>\n<p class=\"meta\">Latency: min / mean / max from a command pulse's rising edge to its output "
+       "step pulse; * = pulses were lost, measured from the latest command pulse.</p>\n";
+  std::vector<const Row*> diverged;
+  for (const auto& r : in.rows)
+    if (r.case_name == c.name && r.divergence) diverged.push_back(&r);
+  h << "<div class=\"plots\">" << path_svg(c, in.exps[ci], diverged) << deviation_svg(c, in.exps[ci]) << "</div>\n";
+}
+
+// Everything, for the record.
+void write_html_all_results(std::ostream& h, const std::vector<Row>& rows) {
+  h << "<h2>All results</h2>\n<details><summary>" << rows.size()
     << " rows (case, engine, rate)</summary><table><tr><th class=\"l\">case</th><th class=\"l\">engine</th>"
        "<th>rate</th><th>commands</th><th>pulses</th><th>mismatches</th><th>lost</th><th>overruns</th>"
        "<th>verdict</th><th class=\"l\">note</th></tr>\n";
-  for (const auto& r : in.rows)
+  for (const auto& r : rows)
     h << "<tr><td class=\"l\">" << escape(r.case_name) << "</td><td class=\"l\">" << escape(r.engine) << "</td><td>"
       << rate_label(r.rate_pps) << "</td><td>" << r.commands << "</td><td>" << r.pulses << "</td><td>" << r.mismatches
       << "</td><td>" << r.lost << "</td><td>" << (r.overruns < 0 ? std::string("-") : std::to_string(r.overruns))
-      << "</td><td class=\"" << r.verdict << "\">" << r.verdict << "</td><td class=\"l\">" << escape(r.note)
-      << "</td></tr>\n";
-  h << "</table></details>\n<h2>Engines</h2><ul>";
+      << "</td><td class=\"" << to_string(r.verdict) << "\">" << to_string(r.verdict) << "</td><td class=\"l\">"
+      << escape(r.note) << "</td></tr>\n";
+  h << "</table></details>\n";
+}
+
+std::string report_html(const ReportInput& in, const std::string& verdict, const std::vector<std::string>& engines) {
+  std::ostringstream h;
+  write_html_head(h, in, verdict, engines);
+  h << how_to_read();
+  write_html_limits(h, in, engines);
+  write_html_failures(h, in.rows);
+  h << "<h2>Cases</h2>\n";
+  for (std::size_t ci = 0; ci < in.cases.size(); ++ci) write_html_case(h, in, ci, engines);
+  write_html_all_results(h, in.rows);
+  h << "<h2>Engines</h2><ul>";
   for (const auto& e : engines) h << "<li>" << escape(engine_title(e)) << "</li>";
   h << "</ul>\n</body></html>\n";
-  const std::string path = dir + "/report.html";
+  return h.str();
+}
+
+// The engines that have rows, in the usual order.
+std::vector<std::string> engines_in(const std::vector<Row>& rows) {
+  std::vector<std::string> engines;
+  for (const auto& e : engine_names())
+    for (const auto& r : rows)
+      if (r.engine == e) {
+        engines.push_back(e);
+        break;
+      }
+  return engines;
+}
+
+// Writes DIR/NAME and adds its path to `written`.
+void write_file(const std::string& dir, const std::string& name, const std::string& text,
+                std::vector<std::string>& written) {
+  const std::string path = dir + "/" + name;
   std::ofstream f(path);
-  f << h.str();
+  f << text;
   if (!f) throw std::runtime_error(path + ": write failed");
   written.push_back(path);
+}
+
+}  // namespace
+
+std::vector<std::string> write_reports(const std::string& dir, const ReportInput& in) {
+  std::vector<std::string> written;
+  const std::string verdict = verdict_line(in.rows);
+  const std::vector<std::string> engines = engines_in(in.rows);
+  write_file(dir, "report.json", report_json(in, verdict, engines), written);
+  write_file(dir, "junit.xml", junit_xml(in), written);
+  write_file(dir, "report.html", report_html(in, verdict, engines), written);
   return written;
 }
 

@@ -86,21 +86,22 @@ Divergence make_divergence(const std::string& engine, const Expected& exp, const
   return d;
 }
 
-}  // namespace
-
-Row judge(const Case& c, const Expected& exp, double rate_pps, const std::vector<double>& cmd_us,
-          const EngineRun& run) {
+// A row naming the run, with its counts and no verdict yet.
+Row row_of(const Case& c, const Expected& exp, double rate_pps, std::size_t commands, const EngineRun& run) {
   Row r;
   r.case_name = c.name;
   r.engine = run.engine;
   r.rate_pps = rate_pps;
-  r.commands = cmd_us.size();
+  r.commands = commands;
   r.expected = exp.pulses.size();
   r.pulses = run.out.size();
   r.required = loss_forbidden(run.engine, rate_pps);
-  std::vector<std::string> why;
+  return r;
+}
 
-  // Pulse by pulse: axis, sign and order.
+// Pulse by pulse: axis, sign and order; pulses after the model's last count
+// as mismatches. Returns the 0-based index of the first differing pulse.
+std::optional<std::size_t> count_mismatches(const Expected& exp, const EngineRun& run, Row& r) {
   std::optional<std::size_t> first;
   const std::size_t common = std::min(run.out.size(), exp.pulses.size());
   for (std::size_t i = 0; i < common; ++i)
@@ -112,17 +113,23 @@ Row judge(const Case& c, const Expected& exp, double rate_pps, const std::vector
     r.mismatches += run.out.size() - exp.pulses.size();
     if (!first) first = exp.pulses.size();
   }
-  if (first) {
-    r.divergence = make_divergence(run.engine, exp, run, *first);
-    for (const auto& o : run.out) r.path.push_back(o.pulse);
-    why.push_back("first divergence at " + r.divergence->summary);
-  }
+  return first;
+}
 
-  // Pulses lost: every command pulse must give one output pulse.
+// Keeps the first divergence and the engine's pulses (for the plot).
+void record_divergence(const Expected& exp, const EngineRun& run, std::size_t first, Row& r,
+                       std::vector<std::string>& why) {
+  r.divergence = make_divergence(run.engine, exp, run, first);
+  for (const auto& o : run.out) r.path.push_back(o.pulse);
+  why.push_back("first divergence at " + r.divergence->summary);
+}
+
+// Pulses lost: every command pulse must give one output pulse; every lost
+// pulse must have been flagged as an overrun, and nothing else; and none may
+// be lost where the engine must keep up.
+void check_losses(const EngineRun& run, bool diverged, Row& r, std::vector<std::string>& why) {
   r.lost = run.out.size() < r.commands ? r.commands - run.out.size() : 0;
-  if (run.out.size() > r.commands && !first) why.push_back("more output pulses than command pulses");
-
-  // Overruns: every lost pulse must have been flagged, and nothing else.
+  if (run.out.size() > r.commands && !diverged) why.push_back("more output pulses than command pulses");
   if (run.overruns_known) {
     r.overruns = run.overruns;
     if (static_cast<std::uint64_t>(run.overruns) != r.lost)
@@ -132,54 +139,82 @@ Row judge(const Case& c, const Expected& exp, double rate_pps, const std::vector
     why.push_back(std::to_string(r.lost) + " pulses lost and the engine cannot flag overruns");
   }
   if (r.required && r.lost > 0)
-    why.push_back(std::to_string(r.lost) + " pulses lost at " + rate_label(rate_pps) + " pps, where " + run.engine +
-                  " must keep up");
+    why.push_back(std::to_string(r.lost) + " pulses lost at " + rate_label(r.rate_pps) + " pps, where " +
+                  run.engine + " must keep up");
+}
 
-  // Final position: the engine's own count against the model's after as
-  // many pulses.
-  if (run.position_known && !first) {
-    const auto& want = exp.pos[std::min(run.out.size(), exp.pos.size() - 1)];
-    if (want.first != run.x || want.second != run.y)
-      why.push_back("final position " + pos_text(run.x, run.y) + ", model " + pos_text(want.first, want.second));
-  }
-  if (!run.error.empty()) why.insert(why.begin(), "simulation error: " + run.error);
+// Final position: the engine's own count against the model's after as many
+// pulses.
+void check_final_position(const Expected& exp, const EngineRun& run, std::vector<std::string>& why) {
+  if (!run.position_known) return;
+  const auto& want = exp.pos[std::min(run.out.size(), exp.pos.size() - 1)];
+  if (want.first != run.x || want.second != run.y)
+    why.push_back("final position " + pos_text(run.x, run.y) + ", model " + pos_text(want.first, want.second));
+}
 
-  // Latency: output pulse i against command i when nothing was lost,
-  // otherwise against the latest command at or before it.
-  if (!run.out.empty() && !cmd_us.empty() && !first) {
-    r.has_latency = true;
-    r.latency_exact = r.lost == 0;
-    double sum = 0, lo = 1e300, hi = -1e300;
-    for (std::size_t i = 0; i < run.out.size(); ++i) {
-      const double t = run.out[i].t_us;
-      double c0;
-      if (r.latency_exact) {
-        c0 = cmd_us[i];
-      } else {
-        auto it = std::upper_bound(cmd_us.begin(), cmd_us.end(), t);
-        c0 = it == cmd_us.begin() ? cmd_us.front() : *(it - 1);
-      }
-      const double l = t - c0;
-      sum += l;
-      lo = std::min(lo, l);
-      hi = std::max(hi, l);
+// Latency: output pulse i against command i when nothing was lost,
+// otherwise against the latest command at or before it.
+void measure_latency(const std::vector<double>& cmd_us, const EngineRun& run, Row& r, std::vector<std::string>& why) {
+  if (run.out.empty() || cmd_us.empty()) return;
+  r.has_latency = true;
+  r.latency_exact = r.lost == 0;
+  double sum = 0, lo = 1e300, hi = -1e300;
+  for (std::size_t i = 0; i < run.out.size(); ++i) {
+    const double t = run.out[i].t_us;
+    double c0;
+    if (r.latency_exact) {
+      c0 = cmd_us[i];
+    } else {
+      auto it = std::upper_bound(cmd_us.begin(), cmd_us.end(), t);
+      c0 = it == cmd_us.begin() ? cmd_us.front() : *(it - 1);
     }
-    r.lat_min_us = lo;
-    r.lat_max_us = hi;
-    r.lat_mean_us = sum / static_cast<double>(run.out.size());
-    if (r.latency_exact && lo < 0) why.push_back("an output pulse before its command pulse");
+    const double l = t - c0;
+    sum += l;
+    lo = std::min(lo, l);
+    hi = std::max(hi, l);
   }
+  r.lat_min_us = lo;
+  r.lat_max_us = hi;
+  r.lat_mean_us = sum / static_cast<double>(run.out.size());
+  if (r.latency_exact && lo < 0) why.push_back("an output pulse before its command pulse");
+}
 
+// FAIL with every reason, FLAGGED when pulses were lost (each flagged), PASS.
+void give_verdict(const std::vector<std::string>& why, Row& r) {
   if (!why.empty()) {
-    r.verdict = "FAIL";
+    r.verdict = Verdict::Fail;
     for (std::size_t i = 0; i < why.size(); ++i) r.note += (i ? "; " : "") + why[i];
   } else if (r.lost > 0) {
-    r.verdict = "FLAGGED";
+    r.verdict = Verdict::Flagged;
     r.note = std::to_string(r.lost) + " of " + std::to_string(r.commands) +
              " command pulses lost, every one flagged as an overrun";
   } else {
-    r.verdict = "PASS";
+    r.verdict = Verdict::Pass;
   }
+}
+
+}  // namespace
+
+const char* to_string(Verdict v) {
+  switch (v) {
+    case Verdict::Pass: return "PASS";
+    case Verdict::Flagged: return "FLAGGED";
+    case Verdict::Fail: return "FAIL";
+  }
+  return "FAIL";
+}
+
+Row judge(const Case& c, const Expected& exp, double rate_pps, const std::vector<double>& cmd_us,
+          const EngineRun& run) {
+  Row r = row_of(c, exp, rate_pps, cmd_us.size(), run);
+  std::vector<std::string> why;
+  const std::optional<std::size_t> first = count_mismatches(exp, run, r);
+  if (first) record_divergence(exp, run, *first, r, why);
+  check_losses(run, first.has_value(), r, why);
+  if (!first) check_final_position(exp, run, why);
+  if (!run.error.empty()) why.insert(why.begin(), "simulation error: " + run.error);
+  if (!first) measure_latency(cmd_us, run, r, why);
+  give_verdict(why, r);
   return r;
 }
 

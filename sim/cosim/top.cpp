@@ -26,6 +26,14 @@ struct Slot {
   std::unique_ptr<FaultInjector> fault;
 };
 
+// The SystemC module of the engine called `name` (model, rtl, iss, 8085).
+std::unique_ptr<CosimEngine> make_engine(const std::string& name, const Options& opt, const std::string& rom) {
+  if (name == "model") return std::make_unique<ModelCosimEngine>("model");
+  if (name == "rtl") return std::make_unique<CoreCosimEngine>("rtl", opt.core_hz, opt.timing, opt.free_clock);
+  if (name == "iss") return std::make_unique<IssCosimEngine>("iss", opt.cpu_hz);
+  return std::make_unique<BoardCosimEngine>("board", opt.cpu_hz, rom);
+}
+
 class Top : public sc_core::sc_module {
  public:
   SC_HAS_PROCESS(Top);
@@ -35,10 +43,7 @@ class Top : public sc_core::sc_module {
     for (const auto& name : engine_names()) {
       if (!opt.engines.count(name)) continue;
       auto s = std::make_unique<Slot>();
-      if (name == "model") s->engine = std::make_unique<ModelEngine>("model");
-      else if (name == "rtl") s->engine = std::make_unique<CoreEngine>("rtl", opt.core_hz, opt.timing, opt.free_clock);
-      else if (name == "iss") s->engine = std::make_unique<IssEngine>("iss", opt.cpu_hz);
-      else s->engine = std::make_unique<BoardEngine>("board", opt.cpu_hz, rom);
+      s->engine = make_engine(name, opt, rom);
       s->engine->i_cmd(cmd_);
       Sink* sink = &s->rec;
       for (const auto& f : opt.faults)
@@ -137,7 +142,7 @@ bool g_ran = false;
 
 }  // namespace
 
-Outcome run_cosim(const Options& opt) {
+CosimOutcome run_cosim(const Options& opt) {
   if (g_ran) throw std::logic_error("run_cosim: one SystemC elaboration per process");
   g_ran = true;
   const auto wall0 = std::chrono::steady_clock::now();
@@ -169,7 +174,7 @@ Outcome run_cosim(const Options& opt) {
   // sc_stop ends every run: not news.
   sc_core::sc_report_handler::set_actions("/OSCI/SystemC", sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
 
-  Outcome out;
+  CosimOutcome out;
   {
     Top top("top", opt, cases, exps, rates, rom);
     sc_core::sc_start(sc_core::SC_ZERO_TIME);
@@ -185,13 +190,13 @@ Outcome run_cosim(const Options& opt) {
     sc_core::sc_start();
     for (auto& sl : top.slots()) {
       sl->engine->close_trace();
-      if (auto* core = dynamic_cast<CoreEngine*>(sl->engine.get())) out.core_clocks = core->clocks();
+      if (auto* core = dynamic_cast<CoreCosimEngine*>(sl->engine.get())) out.core_clocks = core->clocks();
     }
     out.sim_seconds = sc_core::sc_time_stamp().to_seconds();
     out.rows = std::move(top.rows);
   }
   if (opt.engines.count("8085")) std::filesystem::remove(rom);
-  for (const auto& r : out.rows) (r.passed() ? out.passed : out.failed)++;
+  for (const auto& r : out.rows) (r.acceptable() ? out.passed : out.failed)++;
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   if (!opt.report_dir.empty()) {
     ReportInput in{s.name, cases, exps, rates, out.rows, opt.command_line, out.sim_seconds, out.wall_seconds, opt};

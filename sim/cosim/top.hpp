@@ -29,7 +29,9 @@ struct Options {
   std::string command_line;            // for the report
 };
 
-struct Outcome {
+// What one co-simulation gave: `passed` counts the acceptable() rows (PASS
+// or FLAGGED), as the verdict line does.
+struct CosimOutcome {
   std::vector<Row> rows;
   std::size_t passed = 0, failed = 0;
   double sim_seconds = 0, wall_seconds = 0;
@@ -40,6 +42,6 @@ struct Outcome {
 
 // Elaborates, simulates and (with report_dir) writes the reports. Throws
 // std::logic_error if called a second time in one process.
-Outcome run_cosim(const Options& opt);
+CosimOutcome run_cosim(const Options& opt);
 
 }  // namespace contour::cosim

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "run.hpp"
 
@@ -11,38 +13,39 @@ namespace contour::test {
 namespace {
 
 TEST(Cli, PaperFig2LineSixFive) {
-  const Outcome o = contour("line 6 5 --format steps");
+  const ProcessResult o = contour("line 6 5 --format steps");
   EXPECT_EQ(o.status, 0);
   EXPECT_EQ(o.out, "+X +Y +X +Y +X +Y +X +Y +X +Y +X\n");
   EXPECT_EQ(o.err, "");
 }
 
 TEST(Cli, PaperFig5ArcCcw) {
-  const Outcome o = contour("arc 6 0 0 6 --ccw --format steps");
+  const ProcessResult o = contour("arc 6 0 0 6 --ccw --format steps");
   EXPECT_EQ(o.status, 0);
   EXPECT_EQ(o.out, "-X +Y +Y +Y +Y -X +Y -X +Y -X -X -X\n");
 }
 
+// `contour ARGS` exits 0 and prints every one of `parts`.
+void expect_success_printing(const std::string& args, const std::vector<std::string>& parts) {
+  const ProcessResult o = contour(args);
+  EXPECT_EQ(o.status, 0) << args << ": " << o.err;
+  for (const auto& part : parts) EXPECT_NE(o.out.find(part), std::string::npos) << part << " not in:\n" << o.out;
+}
+
 TEST(Cli, SummaryNamesPulsesEndAndDeviation) {
-  const Outcome o = contour("arc 6 0 0 6 --ccw");
-  EXPECT_EQ(o.status, 0);
-  EXPECT_NE(o.out.find("pulses:        12 (X 6, Y 6)"), std::string::npos) << o.out;
-  EXPECT_NE(o.out.find("end point:     (0, 6)"), std::string::npos) << o.out;
-  EXPECT_NE(o.out.find("max deviation: 1.0000"), std::string::npos) << o.out;
+  expect_success_printing("arc 6 0 0 6 --ccw",
+                          {"pulses:        12 (X 6, Y 6)", "end point:     (0, 6)", "max deviation: 1.0000"});
 }
 
 TEST(Cli, JsonCarriesPulsesAndFinalState) {
-  const Outcome o = contour("line -3 2 --format json");
-  EXPECT_EQ(o.status, 0);
-  EXPECT_NE(o.out.find("\"count\": 5"), std::string::npos) << o.out;
-  EXPECT_NE(o.out.find("\"pulses\": [\"-X\", \"+Y\", \"-X\", \"+Y\", \"-X\"]"), std::string::npos) << o.out;
-  EXPECT_NE(o.out.find("\"x\": -3, \"y\": 2, \"d\": 0"), std::string::npos) << o.out;
-  EXPECT_NE(o.out.find("\"done\": true"), std::string::npos) << o.out;
+  expect_success_printing("line -3 2 --format json",
+                          {"\"count\": 5", "\"pulses\": [\"-X\", \"+Y\", \"-X\", \"+Y\", \"-X\"]",
+                           "\"x\": -3, \"y\": 2, \"d\": 0", "\"done\": true"});
 }
 
 TEST(Cli, SvgDrawsThePathAndTheIdealContour) {
   const std::string path = ::testing::TempDir() + "fig5.svg";
-  const Outcome o = contour("arc 6 0 0 6 --ccw --format svg -o " + path);
+  const ProcessResult o = contour("arc 6 0 0 6 --ccw --format svg -o " + path);
   ASSERT_EQ(o.status, 0) << o.err;
   std::ifstream f(path);
   std::stringstream s;
@@ -68,7 +71,7 @@ struct BadInput {
 class CliErrors : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(CliErrors, OneLineOnStderrAndExitTwo) {
-  const Outcome o = contour(GetParam().args);
+  const ProcessResult o = contour(GetParam().args);
   EXPECT_EQ(o.status, 2) << GetParam().args;
   EXPECT_EQ(o.out, "");
   EXPECT_NE(o.err.find(GetParam().message), std::string::npos) << o.err;
@@ -102,14 +105,8 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 TEST(Cli, HelpListsCommandsAndEngines) {
-  const Outcome top = contour("--help");
-  EXPECT_EQ(top.status, 0);
-  EXPECT_NE(top.out.find("line"), std::string::npos);
-  EXPECT_NE(top.out.find("arc"), std::string::npos);
-  const Outcome arc = contour("arc --help");
-  EXPECT_EQ(arc.status, 0);
-  EXPECT_NE(arc.out.find("--engine E"), std::string::npos);
-  EXPECT_NE(arc.out.find("model"), std::string::npos);
+  expect_success_printing("--help", {"line", "arc"});
+  expect_success_printing("arc --help", {"--engine E", "model"});
 }
 
 }  // namespace

@@ -21,14 +21,14 @@ std::string slurp(const std::string& path) {
 
 }  // namespace
 
-Outcome contour(const std::string& args) {
+ProcessResult contour(const std::string& args) {
   char out_tpl[] = "/tmp/contour-out-XXXXXX";
   char err_tpl[] = "/tmp/contour-err-XXXXXX";
   const int fo = mkstemp(out_tpl), fe = mkstemp(err_tpl);
   if (fo < 0 || fe < 0) throw std::runtime_error("mkstemp failed");
   const std::string cmd = std::string(CONTOUR_EXE) + " " + args + " >" + out_tpl + " 2>" + err_tpl + " </dev/null";
   const int raw = std::system(cmd.c_str());
-  Outcome o;
+  ProcessResult o;
   o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   o.out = slurp(out_tpl);
   o.err = slurp(err_tpl);

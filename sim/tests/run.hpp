@@ -5,13 +5,13 @@
 
 namespace contour::test {
 
-struct Outcome {
+struct ProcessResult {
   int status = -1;
   std::string out;
   std::string err;
 };
 
 // `args` is appended to the contour executable's path and run by /bin/sh.
-Outcome contour(const std::string& args);
+ProcessResult contour(const std::string& args);
 
 }  // namespace contour::test
