@@ -1,6 +1,6 @@
 # make lint (rtl/Makefile): the CPU, its synthesis wrapper (both variants)
 # and the board.
-CPU85_LINT_V := cpu8085/cpu8085.v cpu8085/cpu8085_alu.v
+CPU85_LINT_V := cpu8085/cpu8085.v cpu8085/cpu8085_alu.v cpu8085/cpu8085_decode.v
 BOARD85_LINT_V := $(addprefix board8085/,board8085.v board8085_rom.v board8085_ram.v \
 	board8085_mailbox.v board8085_io.v)
 

@@ -6,7 +6,7 @@
 #               (rtl/board8085/synth/board_test.memh, path relative to rtl/synth)
 CPU85_DIR := $(RTL)/cpu8085
 BOARD85_DIR := $(RTL)/board8085
-CPU85_V := $(CPU85_DIR)/cpu8085.v $(CPU85_DIR)/cpu8085_alu.v
+CPU85_V := $(CPU85_DIR)/cpu8085.v $(CPU85_DIR)/cpu8085_alu.v $(CPU85_DIR)/cpu8085_decode.v
 BOARD85_V := $(addprefix $(BOARD85_DIR)/,board8085.v board8085_rom.v board8085_ram.v \
 	board8085_mailbox.v board8085_io.v) $(CPU85_V)
 
