@@ -634,8 +634,10 @@ module cpu8085 (
     end else if (i_dbg_load) begin
       {rf[R_A], rf[R_F], rf[R_B], rf[R_C], rf[R_D], rf[R_E], rf[R_H], rf[R_L]} <= i_dbg_regs;
     end else begin
-      if (rf_we) rf[rf_wa] <= rf_wd;
-      if (pair_we) begin
+      // F is written by its own port only: the byte and pair ports never
+      // address it (asserted below), the guards tell synthesis so.
+      if (rf_we && rf_wa != R_F) rf[rf_wa] <= rf_wd;
+      if (pair_we && pair_wa != 2'd3) begin
         rf[{pair_wa, 1'b0}] <= pair_wd[15:8];
         rf[{pair_wa, 1'b1}] <= pair_wd[7:0];
       end
@@ -700,6 +702,9 @@ module cpu8085 (
       assert (kind_q != K_IDLE || mc_q == 3'd0);
     end
     if (f_run) begin
+      // The byte and pair write ports never address F (index 6, pair 3).
+      assert (!rf_we || rf_wa != R_F);
+      assert (!pair_we || pair_wa != 2'd3);
       // At most one bus strobe.
       assert ({1'b0, o_rd} + {1'b0, o_wr} + {1'b0, o_inta} <= 2'd1);
       // A unit ends after the data sheet's number of T-states: an
