@@ -223,7 +223,9 @@ module cpu8085 (
   // For the current unit and cycle index: the cycle type (seq_cyc), its
   // address (seq_asel) and write data (seq_dout) sources, and whether it is
   // the unit's last cycle (seq_last). Cycle 0 is the opcode fetch (or what
-  // replaces it); the data sheet's cycle list of each class follows.
+  // replaces it); the data sheet's cycle list of each class follows. Each
+  // block assigns its default first; the class flags are one-hot, so at
+  // most one of the `if`s after it applies and their order is immaterial.
   reg [2:0] seq_cyc, seq_asel;
   reg       seq_last;
   reg [7:0] seq_dout;
