@@ -142,6 +142,68 @@ module cpu8085 (
   wire intr_mode = (kind == K_INTR);
 
   // ------------------------------------------------------------ decode
+  // The instruction register decoded once into one-hot classes.
+  wire is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i;
+  wire is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc;
+  wire is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct;
+  wire is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp;
+  wire is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei;
+  wire is_ccc, is_call, is_push, is_rst, of6, of_only;
+  cpu8085_decode u_dec (
+      .i_ir         (ir_q),
+      .o_is_hlt     (is_hlt),
+      .o_is_mov_rr  (is_mov_rr),
+      .o_is_mov_mr  (is_mov_mr),
+      .o_is_mov_rm  (is_mov_rm),
+      .o_is_alu_r   (is_alu_r),
+      .o_is_alu_m   (is_alu_m),
+      .o_is_alu_i   (is_alu_i),
+      .o_is_mvi_r   (is_mvi_r),
+      .o_is_mvi_m   (is_mvi_m),
+      .o_is_incdec_r(is_incdec_r),
+      .o_is_incdec_m(is_incdec_m),
+      .o_is_acc     (is_acc),
+      .o_is_lxi     (is_lxi),
+      .o_is_dad     (is_dad),
+      .o_is_inx     (is_inx),
+      .o_is_dcx     (is_dcx),
+      .o_is_stax    (is_stax),
+      .o_is_ldax    (is_ldax),
+      .o_is_direct  (is_direct),
+      .o_is_rim     (is_rim),
+      .o_is_sim     (is_sim),
+      .o_is_rcc     (is_rcc),
+      .o_is_ret     (is_ret),
+      .o_is_pop     (is_pop),
+      .o_is_jcc     (is_jcc),
+      .o_is_jmp     (is_jmp),
+      .o_is_out     (is_out),
+      .o_is_in      (is_in),
+      .o_is_xthl    (is_xthl),
+      .o_is_xchg    (is_xchg),
+      .o_is_pchl    (is_pchl),
+      .o_is_sphl    (is_sphl),
+      .o_is_di      (is_di),
+      .o_is_ei      (is_ei),
+      .o_is_ccc     (is_ccc),
+      .o_is_call    (is_call),
+      .o_is_push    (is_push),
+      .o_is_rst     (is_rst),
+      .o_of6        (of6),
+      .o_of_only    (of_only)
+  );
+  // Classes that share their cycle list.
+  wire is_mem_rmw = is_mvi_m | is_incdec_m;  // MR (or operand) then MW (HL)
+  wire is_pop_ret = is_rcc | is_ret | is_pop;  // two reads at SP
+  wire is_calls = is_ccc | is_call;  // MR MR MW MW
+  wire is_io = is_out | is_in;
+  // Where the cycle index stands.
+  wire mc_1 = (mc_q == 3'd1);
+  wire mc_2 = (mc_q == 3'd2);
+  wire mc_3 = (mc_q == 3'd3);
+  wire mc_4 = (mc_q == 3'd4);
+  wire mc_le2 = (mc_q <= 3'd2);
+
   // Conditions NZ Z NC C PO PE P M.
   reg cond;
   always @* begin
@@ -157,22 +219,13 @@ module cpu8085 (
     endcase
   end
 
-  // Opcode fetches of 6 T-states.
-  reg of6;
-  always @* begin
-    casez (ir_q)
-      8'b00??0011, 8'b00??1011: of6 = 1'b1;  // INX DCX
-      8'b11101001, 8'b11111001: of6 = 1'b1;  // PCHL SPHL
-      8'b11001101, 8'b11???100: of6 = 1'b1;  // CALL Ccc
-      8'b11???000, 8'b11???111: of6 = 1'b1;  // Rcc RST
-      8'b11??0101: of6 = 1'b1;  // PUSH
-      default: of6 = 1'b0;
-    endcase
-  end
-
-  // The machine cycle sequence: for the current unit and cycle index, the
-  // cycle type, its address and write data source, and whether it is the
-  // unit's last cycle.
+  // ------------------------------------------------ machine cycle sequence
+  // For the current unit and cycle index: the cycle type (seq_cyc), its
+  // address (seq_asel) and write data (seq_dout) sources, and whether it is
+  // the unit's last cycle (seq_last). Cycle 0 is the opcode fetch (or what
+  // replaces it); the data sheet's cycle list of each class follows. Each
+  // block assigns its default first; the class flags are one-hot, so at
+  // most one of the `if`s after it applies and their order is immaterial.
   reg [2:0] seq_cyc, seq_asel;
   reg       seq_last;
   reg [7:0] seq_dout;
@@ -180,121 +233,77 @@ module cpu8085 (
   wire [15:0] rp_val = (rp == 2'd0) ? bc : (rp == 2'd1) ? de : (rp == 2'd2) ? hl : sp_q;
   wire [7:0] push_hi = (rp == 2'd3) ? reg_a : rf[{rp, 1'b0}];
   wire [7:0] push_lo = (rp == 2'd3) ? reg_f : rf[{rp, 1'b1}];
-  // The casez blocks below are priority decoders: an earlier, narrower
-  // pattern (HLT, M operands) wins over a later, wider one.
-  /* verilator lint_off CASEOVERLAP */
+
+  // Cycle type. An INTR acknowledge reads its operand bytes by INTA cycles.
   always @* begin
-    seq_cyc  = CY_MR;
-    seq_asel = A_PC;
-    seq_last = 1'b1;
-    seq_dout = reg_a;
+    seq_cyc = CY_MR;
     if (mc_q == 3'd0) begin
       case (kind)
-        K_IACK: begin
-          seq_cyc  = CY_BI;
-          seq_last = 1'b0;
-        end
+        K_IACK: seq_cyc = CY_BI;
         K_IDLE: seq_cyc = CY_HLT;
-        K_INTR: begin
-          seq_cyc  = CY_INA;
-          seq_last = 1'b1;
-        end
+        K_INTR: seq_cyc = CY_INA;
         default: seq_cyc = CY_OF;
       endcase
-      if (kind != K_IACK && kind != K_IDLE) begin
-        // Does the instruction continue past its opcode fetch?
-        casez (ir_q)
-          8'b01110110: seq_last = 1'b0;  // HLT
-          8'b01110???, 8'b01???110: seq_last = 1'b0;  // MOV M,r / MOV r,M
-          8'b10???110, 8'b11???110: seq_last = 1'b0;  // ALU M / ALU imm
-          8'b00???110, 8'b0011010?: seq_last = 1'b0;  // MVI, INR M, DCR M
-          8'b00??0001, 8'b00??1001: seq_last = 1'b0;  // LXI DAD
-          8'b000?0010, 8'b000?1010: seq_last = 1'b0;  // STAX LDAX
-          8'b001??010: seq_last = 1'b0;  // SHLD LHLD STA LDA
-          8'b11???000: seq_last = ~cond;  // Rcc
-          8'b11001001, 8'b11??0001: seq_last = 1'b0;  // RET POP
-          8'b11???010, 8'b11000011: seq_last = 1'b0;  // Jcc JMP
-          8'b11010011, 8'b11011011, 8'b11100011: seq_last = 1'b0;  // OUT IN XTHL
-          8'b11???100, 8'b11001101: seq_last = 1'b0;  // Ccc CALL
-          8'b11??0101, 8'b11???111: seq_last = 1'b0;  // PUSH RST
-          default: seq_last = 1'b1;
-        endcase
-      end
     end else begin
-      casez (ir_q)
-        8'b01110110: seq_cyc = CY_HLT;  // HLT: its fifth T-state
-        8'b01110???: begin  // MOV M,r
-          seq_cyc  = CY_MW;
-          seq_asel = A_HL;
-          seq_dout = rf[sss];
-        end
-        8'b01???110, 8'b10???110: seq_asel = A_HL;  // MOV r,M / ALU M
-        8'b11???110: ;  // ALU imm
-        8'b00110110, 8'b0011010?: begin  // MVI M / INR M / DCR M
-          seq_asel = (ir_q == 8'h36 && mc_q == 3'd1) ? A_PC : A_HL;
-          seq_cyc  = (mc_q == 3'd1) ? CY_MR : CY_MW;
-          seq_dout = z_q;
-          seq_last = (mc_q == 3'd2);
-        end
-        8'b00???110: ;  // MVI r
-        8'b00??0001: seq_last = (mc_q == 3'd2);  // LXI
-        8'b00??1001: begin  // DAD: two bus idle cycles
-          seq_cyc  = CY_BI;
-          seq_last = (mc_q == 3'd2);
-        end
-        8'b000?0010: begin  // STAX
-          seq_cyc  = CY_MW;
-          seq_asel = ir_q[4] ? A_DE : A_BC;
-        end
-        8'b000?1010: seq_asel = ir_q[4] ? A_DE : A_BC;  // LDAX
-        8'b001??010: begin  // SHLD LHLD STA LDA
-          seq_asel = (mc_q <= 3'd2) ? A_PC : A_WZ;
-          seq_cyc  = (mc_q <= 3'd2 || ir_q[3]) ? CY_MR : CY_MW;
-          seq_dout = (ir_q[4]) ? reg_a : (mc_q == 3'd3) ? rf[R_L] : rf[R_H];
-          seq_last = (mc_q == (ir_q[4] ? 3'd3 : 3'd4));
-        end
-        8'b11???000, 8'b11001001, 8'b11??0001: begin  // Rcc RET POP
-          seq_asel = A_SP;
-          seq_last = (mc_q == 3'd2);
-        end
-        8'b11???010: seq_last = (mc_q == 3'd2) || !cond;  // Jcc
-        8'b11000011: seq_last = (mc_q == 3'd2);  // JMP
-        8'b11010011, 8'b11011011: begin  // OUT IN
-          seq_asel = (mc_q == 3'd1) ? A_PC : A_ZZ;
-          seq_cyc  = (mc_q == 3'd1) ? CY_MR : (ir_q[3] ? CY_IOR : CY_IOW);
-          seq_last = (mc_q == 3'd2);
-        end
-        8'b11100011: begin  // XTHL
-          seq_asel = (mc_q == 3'd1 || mc_q == 3'd4) ? A_SP : A_SP1;
-          seq_cyc  = (mc_q <= 3'd2) ? CY_MR : CY_MW;
-          seq_dout = (mc_q == 3'd3) ? rf[R_H] : rf[R_L];
-          seq_last = (mc_q == 3'd4);
-        end
-        8'b11???100, 8'b11001101: begin  // Ccc CALL
-          seq_asel = (mc_q <= 3'd2) ? A_PC : A_SP;
-          seq_cyc  = (mc_q <= 3'd2) ? CY_MR : CY_MW;
-          seq_dout = (mc_q == 3'd3) ? pc_q[15:8] : pc_q[7:0];
-          seq_last = (mc_q == 3'd4) || (mc_q == 3'd1 && !ir_q[0] && !cond);
-        end
-        8'b11??0101: begin  // PUSH
-          seq_cyc  = CY_MW;
-          seq_asel = A_SP;
-          seq_dout = (mc_q == 3'd1) ? push_hi : push_lo;
-          seq_last = (mc_q == 3'd2);
-        end
-        8'b11???111: begin  // RST (and the TRAP / RST x.5 acknowledge)
-          seq_cyc  = CY_MW;
-          seq_asel = A_SP;
-          seq_dout = (mc_q == 3'd1) ? pc_q[15:8] : pc_q[7:0];
-          seq_last = (mc_q == 3'd2);
-        end
-        default: ;
-      endcase
-      // INTR acknowledge: operand bytes come from INTA cycles.
+      if (is_hlt) seq_cyc = CY_HLT;  // its fifth T-state
+      if (is_mov_mr | is_stax | is_push | is_rst) seq_cyc = CY_MW;
+      if (is_mem_rmw) seq_cyc = mc_1 ? CY_MR : CY_MW;
+      if (is_dad) seq_cyc = CY_BI;  // two bus idle cycles
+      if (is_direct) seq_cyc = (mc_le2 || ir_q[3]) ? CY_MR : CY_MW;
+      if (is_io) seq_cyc = mc_1 ? CY_MR : (is_in ? CY_IOR : CY_IOW);
+      if (is_xthl | is_calls) seq_cyc = mc_le2 ? CY_MR : CY_MW;
       if (intr_mode && seq_cyc == CY_MR && seq_asel == A_PC) seq_cyc = CY_INA;
     end
   end
-  /* verilator lint_on CASEOVERLAP */
+
+  // Address source.
+  always @* begin
+    seq_asel = A_PC;
+    if (mc_q != 3'd0) begin
+      if (is_mov_mr | is_mov_rm | is_alu_m) seq_asel = A_HL;
+      if (is_mem_rmw) seq_asel = (is_mvi_m && mc_1) ? A_PC : A_HL;
+      if (is_stax | is_ldax) seq_asel = ir_q[4] ? A_DE : A_BC;
+      if (is_direct) seq_asel = mc_le2 ? A_PC : A_WZ;
+      if (is_pop_ret | is_push | is_rst) seq_asel = A_SP;
+      if (is_io) seq_asel = mc_1 ? A_PC : A_ZZ;
+      if (is_xthl) seq_asel = (mc_1 || mc_4) ? A_SP : A_SP1;  // H to SP+1 first
+      if (is_calls) seq_asel = mc_le2 ? A_PC : A_SP;
+    end
+  end
+
+  // Write data.
+  always @* begin
+    seq_dout = reg_a;
+    if (mc_q != 3'd0) begin
+      if (is_mov_mr) seq_dout = rf[sss];
+      if (is_mem_rmw) seq_dout = z_q;
+      if (is_direct) seq_dout = ir_q[4] ? reg_a : mc_3 ? rf[R_L] : rf[R_H];
+      if (is_xthl) seq_dout = mc_3 ? rf[R_H] : rf[R_L];
+      if (is_calls) seq_dout = mc_3 ? pc_q[15:8] : pc_q[7:0];
+      if (is_rst) seq_dout = mc_1 ? pc_q[15:8] : pc_q[7:0];
+      if (is_push) seq_dout = mc_1 ? push_hi : push_lo;
+    end
+  end
+
+  // Last cycle of the unit. Rcc ends after its opcode fetch when the
+  // condition fails, Jcc / Ccc after their first operand byte.
+  always @* begin
+    seq_last = 1'b1;
+    if (mc_q == 3'd0) begin
+      case (kind)
+        K_IACK: seq_last = 1'b0;
+        K_IDLE: seq_last = 1'b1;
+        default: seq_last = of_only | (is_rcc & ~cond);
+      endcase
+    end else begin
+      if (is_mem_rmw | is_lxi | is_dad | is_pop_ret | is_jmp | is_io) seq_last = mc_2;
+      if (is_push | is_rst) seq_last = mc_2;
+      if (is_jcc) seq_last = mc_2 || !cond;
+      if (is_direct) seq_last = ir_q[4] ? mc_3 : mc_4;
+      if (is_xthl) seq_last = mc_4;
+      if (is_calls) seq_last = mc_4 || (mc_1 && is_ccc && !cond);
+    end
+  end
 
   // Cycle length and ends.
   reg [2:0] cyc_len;
@@ -315,6 +324,13 @@ module cpu8085 (
   wire cyc_end_later = !unit_t1 && !of_early && (t_q == cyc_len);
   wire cyc_end = unit_t1 ? (kind_now == K_IDLE) : cyc_end_later;
   wire unit_end = unit_t1 ? (kind_now == K_IDLE) : (cyc_end_later && seq_last);
+  // The instruction's work is done at the end of its cycles: of the opcode
+  // fetch (end_of) or of a later cycle (end_mc).
+  wire end_work = cyc_end_later && (kind != K_IDLE);
+  wire end_of = end_work && (mc_q == 3'd0);
+  wire end_mc = end_work && (mc_q != 3'd0);
+  // The opcode arrives at the end of T3 of the opcode fetch / INTA.
+  wire op_load = (mc_q == 3'd0) && (t_q == 3'd3) && (kind == K_INSTR || kind == K_INTR);
 
   // Bus outputs.
   always @* begin
@@ -379,272 +395,331 @@ module cpu8085 (
   wire [ 7:0] rim_val = {i_sid, r75_lat, i_rst65, i_rst55,
                          rim_after_trap_q ? ie_before_trap_q : ie_q, masks_q};
 
-  // Writes a register pair (rp 3: SP).
-  task set_rp;
-    input [1:0] which;
-    input [15:0] v;
-    begin
-      case (which)
-        2'd0: begin rf[R_B] <= v[15:8]; rf[R_C] <= v[7:0]; end
-        2'd1: begin rf[R_D] <= v[15:8]; rf[R_E] <= v[7:0]; end
-        2'd2: begin rf[R_H] <= v[15:8]; rf[R_L] <= v[7:0]; end
-        default: sp_q <= v;
-      endcase
-    end
-  endtask
+  // ------------------------------------------------------------ registers
+  // Each register (or small group) below has its own block; updates happen
+  // at the end of the T-state named in the comments. Priority in each:
+  // reset, then a debug load, then running.
 
-  // ---------------------------------------------------- the one sequencer
-  // Every architectural and sequencing register; updates happen at the end
-  // of the T-state named in each comment.
-  integer k;
-  // Priority decoders again (see above).
-  /* verilator lint_off CASEOVERLAP */
+  // Sequencer: T-state in the cycle and cycle index in the unit; the retire
+  // strobe is the first T-state of the next unit.
   always @(posedge i_clk) begin
     if (i_rst) begin
-      for (k = 0; k < 8; k = k + 1) rf[k] <= 8'h00;
-      pc_q <= 16'h0000;
-      sp_q <= 16'h0000;
-      ir_q <= 8'h00;
-      w_q <= 8'h00;
-      z_q <= 8'h00;
       t_q <= 3'd1;
       mc_q <= 3'd0;
+      o_retire <= 1'b0;
+    end else if (!i_dbg_load) begin
+      o_retire <= unit_end;
+      if (cyc_end) t_q <= 3'd1;
+      else t_q <= t_q + 3'd1;
+      if (unit_end) mc_q <= 3'd0;
+      else if (cyc_end) mc_q <= mc_q + 3'd1;
+    end
+  end
+
+  // What the unit is, decided at its first T-state: kind, interrupt, PC at
+  // its start, and the vector of a TRAP / RST x.5 acknowledge.
+  always @(posedge i_clk) begin
+    if (i_rst) begin
       kind_q <= K_INSTR;
       irq_q <= IRQ_NONE;
       ipc_q <= 16'h0000;
       vec_q <= 16'h0000;
-      ie_q <= 1'b0;
-      ei_delay_q <= 1'b0;
-      halted_q <= 1'b0;
-      sod_q <= 1'b0;
-      masks_q <= 3'b111;
-      r75_latch_q <= 1'b0;
+    end else if (!i_dbg_load && unit_t1) begin
+      kind_q <= kind_now;
+      irq_q <= irq_now;
+      ipc_q <= pc_q;
+      case (irq_now)
+        IRQ_TRAP: vec_q <= 16'h0024;
+        IRQ_75: vec_q <= 16'h003C;
+        IRQ_65: vec_q <= 16'h0034;
+        default: vec_q <= 16'h002C;
+      endcase
+    end
+  end
+
+  // TRAP and RST 7.5 edge latches: set by a rising edge at any time,
+  // cleared by their acknowledge (and RST 7.5's by SIM with R7.5).
+  always @(posedge i_clk) begin
+    if (i_rst) begin
+      trap_prev_q <= 1'b0;
       r75_prev_q <= 1'b0;
       trap_latch_q <= 1'b0;
-      trap_prev_q <= 1'b0;
-      rim_after_trap_q <= 1'b0;
-      ie_before_trap_q <= 1'b0;
-      o_retire <= 1'b0;
-    end else if (i_dbg_load) begin
-      {rf[R_A], rf[R_F], rf[R_B], rf[R_C], rf[R_D], rf[R_E], rf[R_H], rf[R_L]} <= i_dbg_regs;
-      pc_q <= i_dbg_pc;
-      sp_q <= i_dbg_sp;
-    end else begin
-      o_retire <= 1'b0;
-      // Pin edges latch at any time.
+      r75_latch_q <= 1'b0;
+    end else if (!i_dbg_load) begin
       trap_prev_q <= i_trap;
       r75_prev_q <= i_rst75;
-      trap_latch_q <= trap_lat;
-      r75_latch_q <= r75_lat;
+      trap_latch_q <= trap_lat && !(unit_t1 && irq_now == IRQ_TRAP);
+      r75_latch_q <= r75_lat && !(unit_t1 && irq_now == IRQ_75) &&
+                     !(end_of && is_sim && reg_a[4]);
+    end
+  end
 
-      // Sequencing.
-      if (unit_end) begin
-        t_q <= 3'd1;
-        mc_q <= 3'd0;
-        o_retire <= 1'b1;
-      end else if (cyc_end) begin
-        t_q <= 3'd1;
-        mc_q <= mc_q + 3'd1;
-      end else begin
-        t_q <= t_q + 3'd1;
-      end
-
-      // First T-state of a unit: what it is.
+  // Interrupt enable and the EI shadow: an acknowledge clears IE, DI and EI
+  // set it at the end of their opcode fetch; the shadow lasts one unit.
+  always @(posedge i_clk) begin
+    if (i_rst) begin
+      ie_q <= 1'b0;
+      ei_delay_q <= 1'b0;
+    end else if (!i_dbg_load) begin
       if (unit_t1) begin
-        kind_q <= kind_now;
-        irq_q <= irq_now;
-        ipc_q <= pc_q;
         ei_delay_q <= 1'b0;
-        if (kind_now == K_IACK || kind_now == K_INTR) begin
-          ie_q <= 1'b0;
-          halted_q <= 1'b0;
-        end
-        if (kind_now == K_IACK) ir_q <= 8'hFF;  // run as an RST
-        case (irq_now)
-          IRQ_TRAP: begin
-            vec_q <= 16'h0024;
-            trap_latch_q <= 1'b0;
-            ie_before_trap_q <= ie_q;
-            rim_after_trap_q <= 1'b1;
-          end
-          IRQ_75: begin
-            vec_q <= 16'h003C;
-            r75_latch_q <= 1'b0;
-          end
-          IRQ_65: vec_q <= 16'h0034;
-          default: vec_q <= 16'h002C;
-        endcase
+        if (kind_now == K_IACK || kind_now == K_INTR) ie_q <= 1'b0;
       end
-
-      // Opcode fetch / INTA: the opcode arrives at the end of T3.
-      if (mc_q == 3'd0 && t_q == 3'd3 && (kind == K_INSTR || kind == K_INTR)) begin
-        ir_q <= i_din;
-        if (kind == K_INSTR) pc_q <= pc_q + 16'd1;
-      end
-
-      // End of a machine cycle: the instruction's work.
-      if (cyc_end_later && kind != K_IDLE) begin
-        if (mc_q == 3'd0) begin
-          // ---- end of the opcode fetch
-          casez (ir_q)
-            8'b01110110: ;  // HLT: see its HLT cycle
-            8'b01??????: if (ddd != 3'd6 && sss != 3'd6) rf[ddd] <= rf[sss];  // MOV r,r
-            8'b10??????: begin  // ALU r
-              if (sss != 3'd6) begin
-                if (ddd != 3'd7) rf[R_A] <= alu_res;
-                rf[R_F] <= alu_f;
-              end
-            end
-            8'b00???10?: begin  // INR r / DCR r
-              if (ddd != 3'd6) begin
-                rf[ddd] <= alu_res;
-                rf[R_F] <= alu_f;
-              end
-            end
-            8'b00???111: begin  // rotates DAA CMA STC CMC
-              rf[R_A] <= alu_res;
-              rf[R_F] <= alu_f;
-            end
-            8'b00??0011: set_rp(rp, rp_inc);  // INX
-            8'b00??1011: set_rp(rp, rp_dec);  // DCX
-            8'b00100000: begin  // RIM
-              rf[R_A] <= rim_val;
-              rim_after_trap_q <= 1'b0;
-            end
-            8'b00110000: begin  // SIM
-              if (reg_a[3]) masks_q <= reg_a[2:0];
-              if (reg_a[4]) r75_latch_q <= 1'b0;
-              if (reg_a[6]) sod_q <= reg_a[7];
-            end
-            8'b11101011: begin  // XCHG
-              rf[R_D] <= rf[R_H];
-              rf[R_E] <= rf[R_L];
-              rf[R_H] <= rf[R_D];
-              rf[R_L] <= rf[R_E];
-            end
-            8'b11101001: pc_q <= hl;  // PCHL
-            8'b11111001: sp_q <= hl;  // SPHL
-            8'b11110011: begin  // DI
-              ie_q <= 1'b0;
-              ei_delay_q <= 1'b0;
-            end
-            8'b11111011: begin  // EI
-              ie_q <= 1'b1;
-              ei_delay_q <= 1'b1;
-            end
-            8'b11??0101, 8'b11???111: sp_q <= sp_q - 16'd1;  // PUSH RST (and acks)
-            default: ;
-          endcase
-        end else begin
-          // ---- end of a later machine cycle
-          if ((seq_cyc == CY_MR) && (seq_asel == A_PC)) pc_q <= pc_q + 16'd1;
-          casez (ir_q)
-            8'b01110110: halted_q <= 1'b1;  // HLT
-            8'b01110???: ;  // MOV M,r
-            8'b01???110: rf[ddd] <= i_din;  // MOV r,M
-            8'b10???110, 8'b11???110: begin  // ALU M / ALU imm
-              if (ddd != 3'd7) rf[R_A] <= alu_res;
-              rf[R_F] <= alu_f;
-            end
-            8'b00110110: if (mc_q == 3'd1) z_q <= i_din;  // MVI M
-            8'b0011010?: begin  // INR M / DCR M
-              if (mc_q == 3'd1) begin
-                z_q <= alu_res;
-                rf[R_F] <= alu_f;
-              end
-            end
-            8'b00???110: rf[ddd] <= i_din;  // MVI r
-            8'b00??0001: begin  // LXI
-              if (mc_q == 3'd1) z_q <= i_din;
-              else set_rp(rp, {i_din, z_q});
-            end
-            8'b00??1001: begin  // DAD
-              if (mc_q == 3'd2) begin
-                rf[R_H] <= dad_sum[15:8];
-                rf[R_L] <= dad_sum[7:0];
-                rf[R_F] <= {reg_f[7:1], dad_sum[16]};
-              end
-            end
-            8'b000?0010: ;  // STAX
-            8'b000?1010: rf[R_A] <= i_din;  // LDAX
-            8'b001??010: begin  // SHLD LHLD STA LDA
-              case (mc_q)
-                3'd1: z_q <= i_din;
-                3'd2: w_q <= i_din;
-                3'd3: begin
-                  if (ir_q[4]) begin
-                    if (ir_q[3]) rf[R_A] <= i_din;  // LDA
-                  end else begin
-                    if (ir_q[3]) rf[R_L] <= i_din;  // LHLD
-                    {w_q, z_q} <= wz + 16'd1;
-                  end
-                end
-                default: if (ir_q[3]) rf[R_H] <= i_din;  // LHLD
-              endcase
-            end
-            8'b11???000, 8'b11001001, 8'b11??0001: begin  // Rcc RET POP
-              sp_q <= sp_q + 16'd1;
-              if (mc_q == 3'd1) z_q <= i_din;
-              else if (ir_q[0] && ir_q[3:0] != 4'b1001) begin  // POP
-                if (rp == 2'd3) begin
-                  rf[R_A] <= i_din;
-                  rf[R_F] <= z_q & 8'hD5;
-                end else begin
-                  rf[{rp, 1'b0}] <= i_din;
-                  rf[{rp, 1'b1}] <= z_q;
-                end
-              end else pc_q <= {i_din, z_q};  // RET / Rcc
-            end
-            8'b11???010, 8'b11000011: begin  // Jcc JMP
-              if (mc_q == 3'd1) begin
-                z_q <= i_din;
-                // Jcc not taken: skip the high byte without reading it.
-                if (!ir_q[0] && !cond && !intr_mode) pc_q <= pc_q + 16'd2;
-              end else pc_q <= {i_din, z_q};
-            end
-            8'b11010011: if (mc_q == 3'd1) z_q <= i_din;  // OUT
-            8'b11011011: begin  // IN
-              if (mc_q == 3'd1) z_q <= i_din;
-              else rf[R_A] <= i_din;
-            end
-            8'b11100011: begin  // XTHL
-              case (mc_q)
-                3'd1: z_q <= i_din;
-                3'd2: w_q <= i_din;
-                3'd3: ;
-                default: begin
-                  rf[R_H] <= w_q;
-                  rf[R_L] <= z_q;
-                end
-              endcase
-            end
-            8'b11???100, 8'b11001101: begin  // Ccc CALL
-              case (mc_q)
-                3'd1: begin
-                  z_q <= i_din;
-                  if (!ir_q[0] && !cond && !intr_mode) pc_q <= pc_q + 16'd2;
-                end
-                3'd2: begin
-                  w_q <= i_din;
-                  sp_q <= sp_q - 16'd1;
-                end
-                3'd3: sp_q <= sp_q - 16'd1;
-                default: pc_q <= wz;
-              endcase
-            end
-            8'b11??0101: if (mc_q == 3'd1) sp_q <= sp_q - 16'd1;  // PUSH
-            8'b11???111: begin  // RST / acknowledge
-              if (mc_q == 3'd1) sp_q <= sp_q - 16'd1;
-              else pc_q <= (kind == K_IACK) ? vec_q : {10'b0, ddd, 3'b000};
-            end
-            default: ;
-          endcase
-        end
+      if (end_of && (is_di || is_ei)) begin
+        ie_q <= is_ei;
+        ei_delay_q <= is_ei;
       end
     end
   end
 
-  /* verilator lint_on CASEOVERLAP */
+  // RIM's IE bit after a TRAP: IE as it was before the TRAP, until the
+  // first RIM.
+  always @(posedge i_clk) begin
+    if (i_rst) begin
+      rim_after_trap_q <= 1'b0;
+      ie_before_trap_q <= 1'b0;
+    end else if (!i_dbg_load) begin
+      if (unit_t1 && irq_now == IRQ_TRAP) begin
+        ie_before_trap_q <= ie_q;
+        rim_after_trap_q <= 1'b1;
+      end
+      if (end_of && is_rim) rim_after_trap_q <= 1'b0;
+    end
+  end
+
+  // SIM: interrupt masks (with MSE) and the serial output (with SOE).
+  always @(posedge i_clk) begin
+    if (i_rst) begin
+      masks_q <= 3'b111;
+      sod_q <= 1'b0;
+    end else if (!i_dbg_load && end_of && is_sim) begin
+      if (reg_a[3]) masks_q <= reg_a[2:0];
+      if (reg_a[6]) sod_q <= reg_a[7];
+    end
+  end
+
+  // Halted: set by HLT's fifth T-state, cleared by an acknowledge.
+  always @(posedge i_clk) begin
+    if (i_rst) halted_q <= 1'b0;
+    else if (!i_dbg_load) begin
+      if (unit_t1 && (kind_now == K_IACK || kind_now == K_INTR)) halted_q <= 1'b0;
+      if (end_mc && is_hlt) halted_q <= 1'b1;
+    end
+  end
+
+  // Instruction register: the opcode at the end of T3 of the fetch / INTA;
+  // a TRAP / RST x.5 acknowledge runs as RST 7 (FF).
+  always @(posedge i_clk) begin
+    if (i_rst) ir_q <= 8'h00;
+    else if (!i_dbg_load) begin
+      if (unit_t1 && kind_now == K_IACK) ir_q <= 8'hFF;
+      if (op_load) ir_q <= i_din;
+    end
+  end
+
+  // Temporary pair W Z: operand bytes (Z first), INR M / DCR M's result,
+  // SHLD / LHLD's address + 1.
+  always @(posedge i_clk) begin
+    if (i_rst) begin
+      w_q <= 8'h00;
+      z_q <= 8'h00;
+    end else if (!i_dbg_load && end_mc) begin
+      if (mc_1 && (is_mvi_m | is_lxi | is_direct | is_pop_ret | is_jcc | is_jmp |
+                   is_io | is_xthl | is_calls))
+        z_q <= i_din;
+      if (mc_1 && is_incdec_m) z_q <= alu_res;
+      if (mc_2 && (is_direct | is_xthl | is_calls)) w_q <= i_din;
+      if (mc_3 && is_direct && !ir_q[4]) {w_q, z_q} <= wz + 16'd1;
+    end
+  end
+
+  // Program counter: +1 for the opcode and each operand byte read at PC;
+  // +2 over the address of a Jcc / Ccc not taken (not read; an INTR
+  // acknowledge supplies no address to skip); jumps, calls, returns, RST.
+  always @(posedge i_clk) begin
+    if (i_rst) pc_q <= 16'h0000;
+    else if (i_dbg_load) pc_q <= i_dbg_pc;
+    else begin
+      if (op_load && kind == K_INSTR) pc_q <= pc_q + 16'd1;
+      if (end_of && is_pchl) pc_q <= hl;
+      if (end_mc) begin
+        if (seq_cyc == CY_MR && seq_asel == A_PC) pc_q <= pc_q + 16'd1;
+        if (mc_1 && (is_jcc | is_ccc) && !cond && !intr_mode) pc_q <= pc_q + 16'd2;
+        if (mc_2 && (is_jcc | is_jmp | is_rcc | is_ret)) pc_q <= {i_din, z_q};
+        if (mc_4 && is_calls) pc_q <= wz;
+        if (mc_2 && is_rst) pc_q <= (kind == K_IACK) ? vec_q : {10'b0, ddd, 3'b000};
+      end
+    end
+  end
+
+  // Stack pointer: pushes decrement before each write, pops increment after
+  // each read; SPHL, LXI SP, INX SP, DCX SP.
+  always @(posedge i_clk) begin
+    if (i_rst) sp_q <= 16'h0000;
+    else if (i_dbg_load) sp_q <= i_dbg_sp;
+    else begin
+      if (end_of && (is_push | is_rst)) sp_q <= sp_q - 16'd1;
+      if (end_of && is_sphl) sp_q <= hl;
+      if (end_of && is_inx && rp == 2'd3) sp_q <= rp_inc;
+      if (end_of && is_dcx && rp == 2'd3) sp_q <= rp_dec;
+      if (end_mc) begin
+        if (mc_2 && is_lxi && rp == 2'd3) sp_q <= {i_din, z_q};
+        if (is_pop_ret) sp_q <= sp_q + 16'd1;
+        if ((mc_2 || mc_3) && is_calls) sp_q <= sp_q - 16'd1;
+        if (mc_1 && (is_push | is_rst)) sp_q <= sp_q - 16'd1;
+      end
+    end
+  end
+
+  // Register file write ports, decoded from the class: one register
+  // (rf_we), one pair B / D / H (pair_we), the flags (f_we), and XCHG's
+  // swap of DE and HL.
+  reg        rf_we, pair_we, f_we;
+  reg [ 2:0] rf_wa;
+  reg [ 7:0] rf_wd, f_wd;
+  reg [ 1:0] pair_wa;
+  reg [15:0] pair_wd;
+
+  // One register: MOV, MVI, INR r / DCR r, accumulator results, loads.
+  always @* begin
+    rf_we = 1'b0;
+    rf_wa = R_A;
+    rf_wd = alu_res;
+    if (end_of) begin
+      if (is_mov_rr) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, rf[sss]};
+      if (is_alu_r) rf_we = (ddd != 3'd7);  // CMP writes only F
+      if (is_incdec_r) {rf_we, rf_wa} = {1'b1, ddd};
+      if (is_acc) rf_we = 1'b1;
+      if (is_rim) {rf_we, rf_wd} = {1'b1, rim_val};
+    end
+    if (end_mc) begin
+      if (is_mov_rm || is_mvi_r) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, i_din};
+      if (is_alu_m || is_alu_i) rf_we = (ddd != 3'd7);
+      if (is_ldax || (is_in && mc_2)) {rf_we, rf_wd} = {1'b1, i_din};
+      if (is_direct && mc_3 && ir_q[3]) {rf_we, rf_wa, rf_wd} = {1'b1, ir_q[4] ? R_A : R_L, i_din};
+      if (is_direct && mc_4 && ir_q[3]) {rf_we, rf_wa, rf_wd} = {1'b1, R_H, i_din};
+      if (is_pop && mc_2 && rp == 2'd3) {rf_we, rf_wd} = {1'b1, i_din};
+    end
+  end
+
+  // One pair: LXI, INX, DCX, DAD, POP (not PSW), XTHL.
+  always @* begin
+    pair_we = 1'b0;
+    pair_wa = rp;
+    pair_wd = {i_din, z_q};
+    if (end_of && rp != 2'd3) begin
+      if (is_inx) {pair_we, pair_wd} = {1'b1, rp_inc};
+      if (is_dcx) {pair_we, pair_wd} = {1'b1, rp_dec};
+    end
+    if (end_mc && mc_2 && rp != 2'd3 && (is_lxi || is_pop)) pair_we = 1'b1;
+    if (end_mc && mc_2 && is_dad) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, dad_sum[15:0]};
+    if (end_mc && mc_4 && is_xthl) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, wz};
+  end
+
+  // The flags: ALU results, DAD's carry, POP PSW.
+  always @* begin
+    f_we = 1'b0;
+    f_wd = alu_f;
+    if (end_of && (is_alu_r | is_incdec_r | is_acc)) f_we = 1'b1;
+    if (end_mc) begin
+      if (is_alu_m | is_alu_i | (is_incdec_m & mc_1)) f_we = 1'b1;
+      if (is_dad && mc_2) {f_we, f_wd} = {1'b1, reg_f[7:1], dad_sum[16]};
+      if (is_pop && mc_2 && rp == 2'd3) {f_we, f_wd} = {1'b1, z_q & 8'hD5};
+    end
+  end
+
+  // Register file B C D E H L F A.
+  integer k;
+  always @(posedge i_clk) begin
+    if (i_rst) begin
+      for (k = 0; k < 8; k = k + 1) rf[k] <= 8'h00;
+    end else if (i_dbg_load) begin
+      {rf[R_A], rf[R_F], rf[R_B], rf[R_C], rf[R_D], rf[R_E], rf[R_H], rf[R_L]} <= i_dbg_regs;
+    end else begin
+      // F is written by its own port only: the byte and pair ports never
+      // address it (asserted below), the guards tell synthesis so.
+      if (rf_we && rf_wa != R_F) rf[rf_wa] <= rf_wd;
+      if (pair_we && pair_wa != 2'd3) begin
+        rf[{pair_wa, 1'b0}] <= pair_wd[15:8];
+        rf[{pair_wa, 1'b1}] <= pair_wd[7:0];
+      end
+      if (f_we) rf[R_F] <= f_wd;
+      if (end_of && is_xchg) begin
+        rf[R_D] <= rf[R_H];
+        rf[R_E] <= rf[R_L];
+        rf[R_H] <= rf[R_D];
+        rf[R_L] <= rf[R_E];
+      end
+    end
+  end
+
+`ifdef FORMAL
+  // ------------------------------------------------------------- formal
+  // Proved by rtl/cpu8085/formal/prove.sh from reset, for any pins and bus
+  // data. Debug loads are assumed at unit boundaries only (their documented
+  // use: a load mid-instruction may change F under a pending condition).
+  reg f_past_valid = 1'b0;
+  always @(posedge i_clk) f_past_valid <= 1'b1;
+  always @* begin
+    if (!f_past_valid) assume (i_rst);
+    if (i_dbg_load) assume (unit_t1);
+  end
+  // A clock in which the CPU runs (neither reset nor a debug load).
+  wire f_run = f_past_valid && !i_rst && !i_dbg_load;
+
+  // T-states of the current unit before this one.
+  reg [4:0] f_t_q;
+  always @(posedge i_clk) begin
+    if (i_rst) f_t_q <= 5'd0;
+    else if (!i_dbg_load) f_t_q <= unit_end ? 5'd0 : f_t_q + 5'd1;
+  end
+
+  // The data sheet's T-states of the instruction in ir_q (its condition as
+  // it stands: no conditional instruction changes F).
+  reg [4:0] f_t_expect;
+  always @* begin
+    f_t_expect = 5'd4;  // MOV r,r, ALU r, INR / DCR r, rotates, NOP, ...
+    if (is_hlt) f_t_expect = 5'd5;
+    if (is_inx | is_dcx | is_pchl | is_sphl) f_t_expect = 5'd6;
+    if (is_mov_mr | is_mov_rm | is_alu_m | is_alu_i | is_mvi_r) f_t_expect = 5'd7;
+    if (is_stax | is_ldax) f_t_expect = 5'd7;
+    if (is_mvi_m | is_incdec_m | is_lxi | is_dad | is_ret | is_pop | is_jmp) f_t_expect = 5'd10;
+    if (is_out | is_in) f_t_expect = 5'd10;
+    if (is_push | is_rst) f_t_expect = 5'd12;
+    if (is_direct) f_t_expect = ir_q[4] ? 5'd13 : 5'd16;  // STA LDA / SHLD LHLD
+    if (is_xthl) f_t_expect = 5'd16;
+    if (is_call) f_t_expect = 5'd18;
+    if (is_rcc) f_t_expect = cond ? 5'd12 : 5'd6;
+    if (is_jcc) f_t_expect = cond ? 5'd10 : 5'd7;
+    if (is_ccc) f_t_expect = cond ? 5'd18 : 5'd9;
+  end
+
+  always @* begin
+    if (f_past_valid) begin
+      // The sequencer stays in range: T1..T6 in an opcode fetch / BI6,
+      // T1..T3 in later cycles, at most five cycles per unit.
+      assert (t_q >= 3'd1 && t_q <= 3'd6);
+      assert (mc_q <= 3'd4);
+      if (mc_q != 3'd0) assert (t_q <= 3'd3);
+      assert (kind_q != K_IDLE || mc_q == 3'd0);
+    end
+    if (f_run) begin
+      // The byte and pair write ports never address F (index 6, pair 3).
+      assert (!rf_we || rf_wa != R_F);
+      assert (!pair_we || pair_wa != 2'd3);
+      // At most one bus strobe.
+      assert ({1'b0, o_rd} + {1'b0, o_wr} + {1'b0, o_inta} <= 2'd1);
+      // A unit ends after the data sheet's number of T-states: an
+      // instruction (also one supplied by INTA) by its class, a TRAP /
+      // RST x.5 acknowledge 12, an idle unit 1.
+      if (unit_end && unit_t1) assert (f_t_q == 5'd0);
+      if (unit_end && !unit_t1) begin
+        if (kind_q == K_IACK) assert (f_t_q + 5'd1 == 5'd12);
+        else assert (f_t_q + 5'd1 == f_t_expect);
+      end
+    end
+  end
+`endif
 
   // ---------------------------------------------------------------- debug
   assign o_sod = sod_q;

@@ -1,0 +1,135 @@
+#!/usr/bin/env bash
+# Formal proof of the 8085 CPU's `ifdef FORMAL properties (cpu8085.v,
+# cpu8085_decode.v; docs/cpu8085.md, "Formal"):
+#   - the decoder's classes are one-hot for every opcode (also proved on
+#     the decoder alone by yosys `sat`, all 256 opcodes),
+#   - the sequencer stays in range (T1..T6, at most 5 cycles, later cycles
+#     of 3 T at most, idle units one cycle),
+#   - at most one bus strobe (o_rd o_wr o_inta) at a time,
+#   - every unit ends after the data sheet's T-states: an instruction by its
+#     class (MOV r,r 4, MVI r 7, LXI 10, CALL 18, Jcc 7 / 10, ...), a TRAP /
+#     RST x.5 acknowledge 12, an idle unit 1,
+# from reset, for any pins, bus data and debug loads at unit boundaries.
+# The CPU is flattened to an AIGER model by yosys and proved unbounded by
+# ABC's PDR (IC3): `read_aiger; fold; orpos; pdr` (fold turns the
+# assumptions into the property, orpos makes all asserts one output).
+#
+#   prove.sh OUTDIR            the proof, then the mutants
+#   prove.sh OUTDIR proof      the proof only
+#   prove.sh OUTDIR mutants    the mutants only
+#
+# Each mutant (one deliberate bug, below, a sed on a copy of the source)
+# must be refuted: ABC reports a reachable assertion failure. Exit status 0
+# when everything is proved and every mutant refuted.
+#
+# Cost: a few seconds of CPU per run (yosys ~4 s, PDR ~2 s); the solver is
+# limited to 4 GB of memory and 300 s per run.
+set -euo pipefail
+out=${1:?output directory}
+what=${2:-all}
+here=$(cd "$(dirname "$0")" && pwd)
+src=$(cd "$here/.." && pwd)
+# The CPU's sources, from its one file list.
+sources=$("$src/../filelist" "$src/cpu8085.f" | tr '\n' ' ')
+mkdir -p "$out"
+ulimit -v 4000000
+
+# aig NAME [FILE MUTANT]: flatten the CPU to $out/NAME.aig (no outputs:
+# the assertions are the AIGER bad states, the assumptions its constraints),
+# with the source FILE of the list replaced by MUTANT if given.
+aig() {
+  local srcs=$sources
+  [ $# -lt 3 ] || srcs=${srcs/$src\/$2/$3}
+  timeout 300 yosys -q -l "$out/$1.yosys.log" -p "
+    read_verilog -formal $srcs
+    prep -top cpu8085
+    flatten
+    delete -output cpu8085/o:*
+    memory_map
+    opt -fast
+    techmap
+    opt -fast
+    async2sync
+    dffunmap
+    setundef -undriven -anyseq
+    aigmap
+    opt_clean
+    write_aiger -zinit -map $out/$1.map $out/$1.aig" > /dev/null 2>&1
+}
+
+# pdr NAME: ABC's PDR on $out/NAME.aig; prints proved / failed / unknown.
+pdr() {
+  timeout 300 yosys-abc -c "read_aiger $out/$1.aig; fold; orpos; pdr" \
+    > "$out/$1.abc.log" 2>&1 || true
+  if grep -q "Property proved" "$out/$1.abc.log"; then echo proved
+  elif grep -q "was asserted in frame" "$out/$1.abc.log"; then echo failed
+  else echo unknown
+  fi
+}
+
+# decoder DECODE_V NAME: the decoder alone, all opcodes, by yosys sat.
+decoder() {
+  timeout 300 yosys -q -l "$out/$2.yosys.log" -p "
+    read_verilog -formal $1
+    prep -top cpu8085_decode
+    sat -prove-asserts -verify" > /dev/null 2>&1
+}
+
+fails=0
+if [ "$what" = all ] || [ "$what" = proof ]; then
+  t0=$(date +%s)
+  if decoder "$src/cpu8085_decode.v" decoder; then
+    echo "cpu8085_formal: decoder classes one-hot for all 256 opcodes ($(( $(date +%s) - t0 )) s)"
+  else
+    echo "cpu8085_formal: decoder FAILED (see $out/decoder.yosys.log)"
+    fails=$((fails + 1))
+  fi
+  t0=$(date +%s)
+  if ! aig cpu; then
+    echo "cpu8085_formal: yosys FAILED (see $out/cpu.yosys.log)"
+    fails=$((fails + 1))
+  else
+    r=$(pdr cpu)
+    if [ "$r" = proved ]; then
+      echo "cpu8085_formal: CPU properties proved by PDR ($(( $(date +%s) - t0 )) s)"
+    else
+      echo "cpu8085_formal: CPU properties $r (see $out/cpu.abc.log)"
+      fails=$((fails + 1))
+    fi
+  fi
+fi
+
+# Mutants: "file|description|sed expression". Each must make the proof fail.
+mutants=(
+  "cpu8085_decode.v|PUSH fetched in 4 T instead of 6|s/o_is_ccc | o_is_rcc | o_is_rst | o_is_push;/o_is_ccc | o_is_rcc | o_is_rst;/"
+  "cpu8085_decode.v|MVI r also matches MVI M (classes overlap)|s/assign o_is_mvi_r = g0 \& sss_m \& ~ddd_m;/assign o_is_mvi_r = g0 \& sss_m;/"
+  "cpu8085.v|LXI ends after its first operand byte|s/if (is_mem_rmw | is_lxi | is_dad | is_pop_ret/if (is_mem_rmw | is_dad | is_pop_ret/"
+  "cpu8085.v|Jcc not taken reads the high address byte too|s/if (is_jcc) seq_last = mc_2 || !cond;/if (is_jcc) seq_last = mc_2;/"
+  "cpu8085.v|XTHL runs one cycle too many|s/if (is_xthl) seq_last = mc_4;/if (is_xthl) seq_last = (mc_q == 3'd5);/"
+  "cpu8085.v|write strobe also in memory reads|s/assign o_wr = is_t2 \&\& (seq_cyc == CY_MW/assign o_wr = is_t2 \&\& (seq_cyc == CY_MR || seq_cyc == CY_MW/"
+)
+if [ "$what" = all ] || [ "$what" = mutants ]; then
+  n=0
+  for m in "${mutants[@]}"; do
+    n=$((n + 1))
+    file=${m%%|*}
+    rest=${m#*|}
+    desc=${rest%%|*}
+    expr=${rest#*|}
+    sed "$expr" "$src/$file" > "$out/mutant$n.v"
+    if cmp -s "$src/$file" "$out/mutant$n.v"; then
+      echo "cpu8085_formal: mutant $n ($desc) did not apply to the source"
+      fails=$((fails + 1))
+      continue
+    fi
+    r=unknown
+    aig "mutant$n" "$file" "$out/mutant$n.v" && r=$(pdr "mutant$n")
+    if [ "$r" = failed ]; then
+      echo "cpu8085_formal: mutant $n ($desc) refuted: $(grep -o 'asserted in frame [0-9]*' "$out/mutant$n.abc.log")"
+    else
+      echo "cpu8085_formal: mutant $n ($desc) was NOT refuted: $r (see $out/mutant$n.abc.log)"
+      fails=$((fails + 1))
+    fi
+  done
+fi
+exit $((fails > 0))
