@@ -22,40 +22,31 @@ module blk_prep #(
     input  wire           i_clk,
     input  wire           i_rst,
     input  wire           i_push,
-    input  wire           i_arc,
-    input  wire           i_cw,
-    input  wire           i_sxn,
-    input  wire           i_syn,
-    input  wire [1:0]     i_q,
-    input  wire [2:0]     i_k,
-    input  wire [W-1:0]   i_xs,
-    input  wire [W-1:0]   i_ys,
-    input  wire [W-1:0]   i_xe,
-    input  wire [W-1:0]   i_ye,
+    input  wire [4*W+8:0] i_blk,      // the host's block: [BLK_BITS-1:0], interp_block.vh
     output wire [1:0]     o_inflight, // pushes not yet written (0..2)
     output wire           o_wr,       // the prepared block is valid
-    output wire           o_arc,
-    output wire           o_cw,
-    output wire           o_sxn,
-    output wire           o_syn,
-    output wire [1:0]     o_q,
-    output wire [2:0]     o_k,
-    output wire [W-1:0]   o_ci,
-    output wire [W-1:0]   o_co,
-    output wire [W:0]     o_sub,
-    output wire [W:0]     o_add,
-    output wire [W+1:0]   o_ti1,
-    output wire [W+1:0]   o_ti2,
-    output wire [W+1:0]   o_tim1,
-    output wire [W+1:0]   o_to2,
-    output wire [7:0]     o_flags     // interp_dp F_* order
+    output wire [8*W+26:0] o_pre      // the prepared block: [PRE_BITS-1:0], interp_block.vh
 );
+
+`include "interp_block.vh"
+
+  // The host's block, field by field.
+  wire arc = i_blk[BLK_ARC];
+  wire cw = i_blk[BLK_CW];
+  wire sxn = i_blk[BLK_SXN];
+  wire syn = i_blk[BLK_SYN];
+  wire [1:0] q = i_blk[BLK_Q +: 2];
+  wire [2:0] k = i_blk[BLK_K +: 3];
+  wire [W-1:0] xs = i_blk[BLK_XS +: W];
+  wire [W-1:0] ys = i_blk[BLK_YS +: W];
+  wire [W-1:0] xe = i_blk[BLK_XE +: W];
+  wire [W-1:0] ye = i_blk[BLK_YE +: W];
 
   // ------------------------------------------------------------- stage 1
   // Inward axis in the start quadrant and in the end quadrant (K crossings
   // away, so its parity differs by K[0]).
-  wire in_x0 = ~i_q[0] ^ i_cw;
-  wire in_xe = in_x0 ^ i_k[0];
+  wire in_x0 = ~q[0] ^ cw;
+  wire in_xe = in_x0 ^ k[0];
 
   reg v1_q;
   reg arc1_q, cw1_q, sxn1_q, syn1_q;
@@ -71,16 +62,16 @@ module blk_prep #(
 
   always @(posedge i_clk) begin
     if (i_push) begin
-      arc1_q <= i_arc;
-      cw1_q <= i_cw;
-      sxn1_q <= i_sxn & ~i_arc;
-      syn1_q <= i_syn & ~i_arc;
-      q1_q <= i_arc ? i_q : 2'd0;
-      k1_q <= i_arc ? i_k : 3'd0;
-      ci1_q <= i_arc ? (in_x0 ? i_xs : i_ys) : {W{1'b0}};
-      co1_q <= i_arc ? (in_x0 ? i_ys : i_xs) : {W{1'b0}};
-      ti1s_q <= i_arc ? (in_xe ? i_xe : i_ye) : i_xe;
-      to1s_q <= i_arc ? (in_xe ? i_ye : i_xe) : i_ye;
+      arc1_q <= arc;
+      cw1_q <= cw;
+      sxn1_q <= sxn & ~arc;
+      syn1_q <= syn & ~arc;
+      q1_q <= arc ? q : 2'd0;
+      k1_q <= arc ? k : 3'd0;
+      ci1_q <= arc ? (in_x0 ? xs : ys) : {W{1'b0}};
+      co1_q <= arc ? (in_x0 ? ys : xs) : {W{1'b0}};
+      ti1s_q <= arc ? (in_xe ? xe : ye) : xe;
+      to1s_q <= arc ? (in_xe ? ye : xe) : ye;
     end
   end
 
@@ -132,30 +123,32 @@ module blk_prep #(
   // -------------------------------------------------------------- output
   assign o_inflight = {1'b0, v1_q} + {1'b0, v2_q};
   assign o_wr = v2_q;
-  assign o_arc = arc2_q;
-  assign o_cw = cw2_q;
-  assign o_sxn = sxn2_q;
-  assign o_syn = syn2_q;
-  assign o_q = q2_q;
-  assign o_k = k2_q;
-  assign o_ci = ci2_q;
-  assign o_co = co2_q;
-  assign o_sub = sub2_q;
-  assign o_add = add2_q;
-  assign o_ti1 = ti1_q;
-  assign o_ti2 = ti2_q;
-  assign o_tim1 = tim1_q;
-  assign o_to2 = to2_q;
+  assign o_pre[PRE_ARC] = arc2_q;
+  assign o_pre[PRE_CW] = cw2_q;
+  assign o_pre[PRE_SXN] = sxn2_q;
+  assign o_pre[PRE_SYN] = syn2_q;
+  assign o_pre[PRE_Q +: 2] = q2_q;
+  assign o_pre[PRE_K +: 3] = k2_q;
+  assign o_pre[PRE_CI +: W] = ci2_q;
+  assign o_pre[PRE_CO +: W] = co2_q;
+  assign o_pre[PRE_SUB +: W + 1] = sub2_q;
+  assign o_pre[PRE_ADD +: W + 1] = add2_q;
+  assign o_pre[PRE_TI1 +: W + 2] = ti1_q;
+  assign o_pre[PRE_TI2 +: W + 2] = ti2_q;
+  assign o_pre[PRE_TIM1 +: W + 2] = tim1_q;
+  assign o_pre[PRE_TO2 +: W + 2] = to2_q;
 
   // ci == ti1: arc, ci - 1 == ti; line, 0 == A - 1.
   wire in_one = arc2_q ? (cim1_q == ti2s_q) : (ti2s_q == 1);
-  assign o_flags[0] = (ci2_q == ti2s_q);                // F_IN_EX
-  assign o_flags[1] = (co2_q == to2s_q);                // F_OUT_EX
-  assign o_flags[2] = in_one;                           // F_IN_ONE
-  assign o_flags[3] = ({2'b00, co2_q} == to1_q);        // F_OUT_ONE
-  assign o_flags[4] = arc2_q & (ci2_q == 1);            // F_CI_ONE
-  assign o_flags[5] = (co2_q == ti2s_q);                // F_CO_TI
-  assign o_flags[6] = (to2s_q == 0);                    // F_TO_Z
-  assign o_flags[7] = (to2s_q == 1);                    // F_TO_ONE
+  wire [7:0] flags;                                     // interp_dp F_* order
+  assign o_pre[PRE_FLAGS +: 8] = flags;
+  assign flags[0] = (ci2_q == ti2s_q);                // F_IN_EX
+  assign flags[1] = (co2_q == to2s_q);                // F_OUT_EX
+  assign flags[2] = in_one;                           // F_IN_ONE
+  assign flags[3] = ({2'b00, co2_q} == to1_q);        // F_OUT_ONE
+  assign flags[4] = arc2_q & (ci2_q == 1);            // F_CI_ONE
+  assign flags[5] = (co2_q == ti2s_q);                // F_CO_TI
+  assign flags[6] = (to2s_q == 0);                    // F_TO_Z
+  assign flags[7] = (to2s_q == 1);                    // F_TO_ONE
 
 endmodule

@@ -18,18 +18,9 @@ module interp_core #(
     input  wire           i_rst,
     input  wire           i_abort,
     input  wire           i_cmd,
-    // Block, as the host writes it (see blk_prep).
+    // Block, as the host writes it (see blk_prep), one packed vector.
     input  wire           i_push,
-    input  wire           i_arc,
-    input  wire           i_cw,
-    input  wire           i_sxn,
-    input  wire           i_syn,
-    input  wire [1:0]     i_q,
-    input  wire [2:0]     i_k,
-    input  wire [W-1:0]   i_xs,
-    input  wire [W-1:0]   i_ys,
-    input  wire [W-1:0]   i_xe,
-    input  wire [W-1:0]   i_ye,
+    input  wire [4*W+8:0] i_blk,     // [BLK_BITS-1:0], interp_block.vh
     output wire           o_full,
     output wire [QAW+1:0] o_level,
     // Pulses and state (interp_dp).
@@ -48,41 +39,29 @@ module interp_core #(
     output wire           o_arc
 );
 
-  localparam integer BW = 8 * W + 27;  // prepared block width
+`include "interp_block.vh"
+
   localparam [QAW+1:0] DEPTH = {2'b01, {QAW{1'b0}}};  // memory depth
 
   reg full_q;
   wire push_ok = i_push & ~o_full;
-  wire p_wr, p_arc, p_cw, p_sxn, p_syn;
+  wire p_wr;
   wire [1:0] p_inflight;
-  wire [1:0] p_q;
-  wire [2:0] p_k;
-  wire [W-1:0] p_ci, p_co;
-  wire [W:0] p_sub, p_add;
-  wire [W+1:0] p_ti1, p_ti2, p_tim1, p_to2;
-  wire [7:0] p_flags;
+  wire [PRE_BITS-1:0] p_pre;  // prepared block, into the queue
 
   blk_prep #(.W(W)) u_prep (
-      .i_clk(i_clk), .i_rst(i_rst | i_abort), .i_push(push_ok),
-      .i_arc(i_arc), .i_cw(i_cw), .i_sxn(i_sxn), .i_syn(i_syn), .i_q(i_q), .i_k(i_k),
-      .i_xs(i_xs), .i_ys(i_ys), .i_xe(i_xe), .i_ye(i_ye),
-      .o_inflight(p_inflight), .o_wr(p_wr),
-      .o_arc(p_arc), .o_cw(p_cw), .o_sxn(p_sxn), .o_syn(p_syn),
-      .o_q(p_q), .o_k(p_k), .o_ci(p_ci), .o_co(p_co), .o_sub(p_sub), .o_add(p_add),
-      .o_ti1(p_ti1), .o_ti2(p_ti2), .o_tim1(p_tim1), .o_to2(p_to2), .o_flags(p_flags)
+      .i_clk(i_clk), .i_rst(i_rst | i_abort), .i_push(push_ok), .i_blk(i_blk),
+      .o_inflight(p_inflight), .o_wr(p_wr), .o_pre(p_pre)
   );
 
-  wire [BW-1:0] wdata = {p_arc, p_cw, p_sxn, p_syn, p_q, p_k, p_ci, p_co,
-                         p_sub, p_add, p_ti1, p_ti2, p_tim1, p_to2, p_flags};
-
   wire head_valid, pop, unused_mem_full;  // full is decided below, with blocks in flight
-  wire [BW-1:0] head;
+  wire [PRE_BITS-1:0] head;
   wire [QAW+1:0] fifo_level;
   wire [QAW:0] mem_used;
 
-  move_fifo #(.WIDTH(BW), .AW(QAW)) u_fifo (
+  move_fifo #(.WIDTH(PRE_BITS), .AW(QAW)) u_fifo (
       .i_clk(i_clk), .i_rst(i_rst), .i_flush(i_abort),
-      .i_push(p_wr), .i_data(wdata), .o_full(unused_mem_full),
+      .i_push(p_wr), .i_data(p_pre), .o_full(unused_mem_full),
       .i_pop(pop), .o_valid(head_valid), .o_data(head), .o_level(fifo_level), .o_used(mem_used)
   );
 
@@ -97,22 +76,9 @@ module interp_core #(
   assign o_full = full_q;
   assign o_level = fifo_level + {{QAW{1'b0}}, p_inflight};
 
-  wire h_arc, h_cw, h_sxn, h_syn;
-  wire [1:0] h_q;
-  wire [2:0] h_k;
-  wire [W-1:0] h_ci, h_co;
-  wire [W:0] h_sub, h_add;
-  wire [W+1:0] h_ti1, h_ti2, h_tim1, h_to2;
-  wire [7:0] h_flags;
-  assign {h_arc, h_cw, h_sxn, h_syn, h_q, h_k, h_ci, h_co,
-          h_sub, h_add, h_ti1, h_ti2, h_tim1, h_to2, h_flags} = head;
-
   interp_dp #(.W(W)) u_dp (
       .i_clk(i_clk), .i_rst(i_rst | i_abort), .i_cmd(i_cmd),
-      .i_valid(head_valid), .o_ready(pop),
-      .i_arc(h_arc), .i_cw(h_cw), .i_sxn(h_sxn), .i_syn(h_syn), .i_q(h_q), .i_k(h_k),
-      .i_ci(h_ci), .i_co(h_co), .i_sub(h_sub), .i_add(h_add),
-      .i_ti1(h_ti1), .i_ti2(h_ti2), .i_tim1(h_tim1), .i_to2(h_to2), .i_flags(h_flags),
+      .i_valid(head_valid), .o_ready(pop), .i_pre(head),
       .o_pulse(o_pulse), .o_pulse_y(o_pulse_y), .o_pulse_neg(o_pulse_neg),
       .o_pulse_last(o_pulse_last), .o_busy(o_busy),
       .o_xmag(o_xmag), .o_xneg(o_xneg), .o_ymag(o_ymag), .o_yneg(o_yneg),

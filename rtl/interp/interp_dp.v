@@ -36,21 +36,7 @@ module interp_dp #(
     // Prepared block (blk_prep), valid/ready handshake.
     input  wire           i_valid,
     output wire           o_ready,       // block is taken in this clock
-    input  wire           i_arc,
-    input  wire           i_cw,
-    input  wire           i_sxn,         // line: X runs negative
-    input  wire           i_syn,         // line: Y runs negative
-    input  wire [1:0]     i_q,
-    input  wire [2:0]     i_k,
-    input  wire [W-1:0]   i_ci,
-    input  wire [W-1:0]   i_co,
-    input  wire [W:0]     i_sub,
-    input  wire [W:0]     i_add,
-    input  wire [W+1:0]   i_ti1,
-    input  wire [W+1:0]   i_ti2,
-    input  wire [W+1:0]   i_tim1,
-    input  wire [W+1:0]   i_to2,
-    input  wire [7:0]     i_flags,       // see blk_prep: F_* bit order
+    input  wire [8*W+26:0] i_pre,        // [PRE_BITS-1:0], interp_block.vh
     // Output pulse, registered: valid in the clock after the step, together
     // with the state after it.
     output reg            o_pulse,
@@ -69,7 +55,26 @@ module interp_dp #(
     output wire           o_arc
 );
 
-  // Flag bit order of i_flags (blk_prep builds it the same way).
+`include "interp_block.vh"
+
+  // The prepared block, field by field (the values a load takes).
+  wire l_arc = i_pre[PRE_ARC];
+  wire l_cw = i_pre[PRE_CW];
+  wire l_sxn = i_pre[PRE_SXN];
+  wire l_syn = i_pre[PRE_SYN];
+  wire [1:0] l_q = i_pre[PRE_Q +: 2];
+  wire [2:0] l_k = i_pre[PRE_K +: 3];
+  wire [W-1:0] l_ci = i_pre[PRE_CI +: W];
+  wire [W-1:0] l_co = i_pre[PRE_CO +: W];
+  wire [W:0] l_sub = i_pre[PRE_SUB +: W + 1];
+  wire [W:0] l_add = i_pre[PRE_ADD +: W + 1];
+  wire [W+1:0] l_ti1 = i_pre[PRE_TI1 +: W + 2];
+  wire [W+1:0] l_ti2 = i_pre[PRE_TI2 +: W + 2];
+  wire [W+1:0] l_tim1 = i_pre[PRE_TIM1 +: W + 2];
+  wire [W+1:0] l_to2 = i_pre[PRE_TO2 +: W + 2];
+  wire [7:0] l_flags = i_pre[PRE_FLAGS +: 8];
+
+  // Flag bit order of l_flags (blk_prep builds it the same way).
   localparam integer F_IN_EX   = 0;  // ci == ti: inward axis has no distance left
   localparam integer F_OUT_EX  = 1;  // co == to: outward axis has no distance left
   localparam integer F_IN_ONE  = 2;  // ci == ti1: one inward step left
@@ -159,25 +164,25 @@ module interp_dp #(
 
   // SUB = 2|c_in| - 1 (arc) / B (line).
   always @(posedge i_clk) begin
-    if (ld) sub_q <= i_sub;
+    if (ld) sub_q <= l_sub;
     else if (st & inw & arc_q) sub_q <= xing ? add_q - two : sub_q - two;
   end
 
   // ADD = 2|c_out| + 1 (arc) / A (line).
   always @(posedge i_clk) begin
-    if (ld) add_q <= i_add;
+    if (ld) add_q <= l_add;
     else if (st & arc_q) add_q <= inw ? (xing ? {{W{1'b0}}, 1'b1} : add_q) : add_q + two;
   end
 
   // ci: inward-axis magnitude; takes co's value at a crossing.
   always @(posedge i_clk) begin
-    if (ld) ci_q <= i_ci;
+    if (ld) ci_q <= l_ci;
     else if (st & inw) ci_q <= xing ? co_q : ci_step;
   end
 
   // co: outward-axis magnitude; 0 after a crossing.
   always @(posedge i_clk) begin
-    if (ld) co_q <= i_co;
+    if (ld) co_q <= l_co;
     else if (st & inw & xing) co_q <= {W{1'b0}};
     else if (st & ~inw) co_q <= co_q + 1'b1;
   end
@@ -191,10 +196,10 @@ module interp_dp #(
       kz_q <= 1'b1;
       k1z_q <= 1'b0;
     end else if (ld) begin
-      q_q <= i_q;
-      k_q <= i_k;
-      kz_q <= (i_k == 3'd0);
-      k1z_q <= (i_k == 3'd1) & i_arc & i_flags[F_TO_Z];
+      q_q <= l_q;
+      k_q <= l_k;
+      kz_q <= (l_k == 3'd0);
+      k1z_q <= (l_k == 3'd1) & l_arc & l_flags[F_TO_Z];
     end else if (st & inw & xing) begin
       q_q <= cw_q ? q_q - 1'b1 : q_q + 1'b1;
       k_q <= k_q - 1'b1;
@@ -206,16 +211,16 @@ module interp_dp #(
   // Move constants.
   always @(posedge i_clk) begin
     if (ld) begin
-      arc_q <= i_arc;
-      cw_q <= i_cw;
-      sxn_q <= i_sxn;
-      syn_q <= i_syn;
-      ti1_q <= i_ti1;
-      ti2_q <= i_ti2;
-      tim1_q <= i_tim1;
-      to2_q <= i_to2;
-      to_z_q <= i_flags[F_TO_Z];
-      to_one_q <= i_flags[F_TO_ONE];
+      arc_q <= l_arc;
+      cw_q <= l_cw;
+      sxn_q <= l_sxn;
+      syn_q <= l_syn;
+      ti1_q <= l_ti1;
+      ti2_q <= l_ti2;
+      tim1_q <= l_tim1;
+      to2_q <= l_to2;
+      to_z_q <= l_flags[F_TO_Z];
+      to_one_q <= l_flags[F_TO_ONE];
     end
   end
 
@@ -226,9 +231,9 @@ module interp_dp #(
       in_one_q <= 1'b0;
       ci_one_q <= 1'b0;
     end else if (ld) begin
-      in_ex_q <= i_flags[F_IN_EX];
-      in_one_q <= i_flags[F_IN_ONE];
-      ci_one_q <= i_flags[F_CI_ONE];
+      in_ex_q <= l_flags[F_IN_EX];
+      in_one_q <= l_flags[F_IN_ONE];
+      ci_one_q <= l_flags[F_CI_ONE];
     end else if (st & inw) begin
       in_ex_q <= xing ? co_ti_q : in_one_q;
       in_one_q <= xing ? c_co_ti1 : c_ci_ti2;
@@ -243,9 +248,9 @@ module interp_dp #(
       out_one_q <= 1'b0;
       co_ti_q <= 1'b0;
     end else if (ld) begin
-      out_ex_q <= i_flags[F_OUT_EX];
-      out_one_q <= i_flags[F_OUT_ONE];
-      co_ti_q <= i_flags[F_CO_TI];
+      out_ex_q <= l_flags[F_OUT_EX];
+      out_one_q <= l_flags[F_OUT_ONE];
+      co_ti_q <= l_flags[F_CO_TI];
     end else if (st & ~inw) begin
       out_ex_q <= out_one_q;
       out_one_q <= c_co_to2;
@@ -260,8 +265,8 @@ module interp_dp #(
   // Derived flags. Load: from the block's flags. Inward step within the
   // quadrant, crossing, outward step: from the flags' next values as the
   // flag registers above form them.
-  wire l_kz = (i_k == 3'd0);
-  wire l_k1z = (i_k == 3'd1) & i_arc & i_flags[F_TO_Z];
+  wire l_kz = (l_k == 3'd0);
+  wire l_k1z = (l_k == 3'd1) & l_arc & l_flags[F_TO_Z];
   wire kz_x = (k_q == 3'd1);                     // k after a crossing is 0
   wire k1z_x = (k_q == 3'd2) & to_z_q;
   always @(posedge i_clk) begin
@@ -270,9 +275,9 @@ module interp_dp #(
       lastk_q <= 1'b0;
       xf_q <= 1'b0;
     end else if (ld) begin
-      done_q <= l_kz & i_flags[F_IN_EX] & i_flags[F_OUT_EX];
-      lastk_q <= l_kz & ((i_flags[F_IN_ONE] & i_flags[F_OUT_EX]) | (i_flags[F_IN_EX] & i_flags[F_OUT_ONE]));
-      xf_q <= l_k1z & i_flags[F_CI_ONE] & i_flags[F_CO_TI];
+      done_q <= l_kz & l_flags[F_IN_EX] & l_flags[F_OUT_EX];
+      lastk_q <= l_kz & ((l_flags[F_IN_ONE] & l_flags[F_OUT_EX]) | (l_flags[F_IN_EX] & l_flags[F_OUT_ONE]));
+      xf_q <= l_k1z & l_flags[F_CI_ONE] & l_flags[F_CO_TI];
     end else if (st & inw & ~xing) begin
       done_q <= kz & in_one_q & out_ex_q;
       lastk_q <= kz & ((c_ci_ti2 & out_ex_q) | (in_one_q & out_one_q));
@@ -327,9 +332,9 @@ module interp_dp #(
 
   always @(posedge i_clk) begin
     if (ld) begin
-      ti_f <= i_arc ? i_ti1 - 1'b1 : i_ti1 + 1'b1;
-      to_f <= i_to2 + 2'd2;
-      r2_f <= {{(W+4){1'b0}}, i_ci} * {{(W+4){1'b0}}, i_ci} + {{(W+4){1'b0}}, i_co} * {{(W+4){1'b0}}, i_co};
+      ti_f <= l_arc ? l_ti1 - 1'b1 : l_ti1 + 1'b1;
+      to_f <= l_to2 + 2'd2;
+      r2_f <= {{(W+4){1'b0}}, l_ci} * {{(W+4){1'b0}}, l_ci} + {{(W+4){1'b0}}, l_co} * {{(W+4){1'b0}}, l_co};
       n_f <= {(W+4){1'b0}};
     end else if (st) begin
       n_f <= n_f + 1'b1;

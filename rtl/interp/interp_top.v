@@ -39,10 +39,7 @@ module interp_top #(
   wire abort, clear, push;
   wire [31:0] feed;
   wire [15:0] len, space, setup, hold;
-  wire b_arc, b_cw, b_sxn, b_syn;
-  wire [1:0] b_q;
-  wire [2:0] b_k;
-  wire [W-1:0] b_xs, b_ys, b_xe, b_ye;
+  wire [4*W+8:0] blk;  // the staged block (interp_block.vh)
   wire full, overrun;
   wire [QAW+1:0] level;
   wire [31:0] ovr_count, pos_x, pos_y;
@@ -57,8 +54,7 @@ module interp_top #(
       .i_wb_dat(i_wb_dat), .o_wb_dat(o_wb_dat), .o_wb_ack(o_wb_ack),
       .o_src(src), .o_abort(abort), .o_clear(clear), .o_feed(feed),
       .o_len(len), .o_space(space), .o_setup(setup), .o_hold(hold),
-      .o_push(push), .o_arc(b_arc), .o_cw(b_cw), .o_sxn(b_sxn), .o_syn(b_syn), .o_q(b_q), .o_k(b_k),
-      .o_xs(b_xs), .o_ys(b_ys), .o_xe(b_xe), .o_ye(b_ye),
+      .o_push(push), .o_blk(blk),
       .i_busy(busy), .i_full(full), .i_level(level), .i_overrun(overrun), .i_ovr_count(ovr_count),
       .i_pos_x(pos_x), .i_pos_y(pos_y), .i_moves(moves_q)
   );
@@ -71,9 +67,7 @@ module interp_top #(
   // (waiver in rtl/verilator.vlt).
   interp_core #(.W(W), .QAW(QAW)) u_core (
       .i_clk(i_clk), .i_rst(i_rst), .i_abort(abort), .i_cmd(cmd_core),
-      .i_push(push), .i_arc(b_arc), .i_cw(b_cw), .i_sxn(b_sxn), .i_syn(b_syn), .i_q(b_q), .i_k(b_k),
-      .i_xs(b_xs), .i_ys(b_ys), .i_xe(b_xe), .i_ye(b_ye),
-      .o_full(full), .o_level(level),
+      .i_push(push), .i_blk(blk), .o_full(full), .o_level(level),
       .o_pulse(pulse), .o_pulse_y(pulse_y), .o_pulse_neg(pulse_neg), .o_pulse_last(pulse_last),
       .o_busy(busy), .o_xmag(), .o_xneg(), .o_ymag(), .o_yneg(), .o_d(), .o_q(), .o_k(), .o_arc()
   );

@@ -30,16 +30,7 @@ module wb_regs #(
     output reg  [15:0]   o_hold,
     // Staged block and push
     output reg           o_push,    // one clock, only when the queue is not full
-    output wire          o_arc,
-    output wire          o_cw,
-    output wire          o_sxn,
-    output wire          o_syn,
-    output wire [1:0]    o_q,
-    output wire [2:0]    o_k,
-    output reg  [W-1:0]  o_xs,
-    output reg  [W-1:0]  o_ys,
-    output reg  [W-1:0]  o_xe,
-    output reg  [W-1:0]  o_ye,
+    output wire [4*W+8:0] o_blk,    // the staged block: [BLK_BITS-1:0], interp_block.vh
     // Status
     input  wire          i_busy,
     input  wire          i_full,
@@ -52,6 +43,7 @@ module wb_regs #(
 );
 
 `include "interp_regs.vh"
+`include "interp_block.vh"
 
   localparam integer QDEPTH = (1 << QAW) + 2;  // memory, its output, the datapath
 
@@ -61,13 +53,19 @@ module wb_regs #(
   wire [1:0] unused_adr = i_wb_adr[1:0];
 
   reg [8:0] mode_q;
+  reg [W-1:0] xs_q, ys_q, xe_q, ye_q;
   reg reject_q;
-  assign o_arc = mode_q[BLK_MODE_ARC];
-  assign o_cw = mode_q[BLK_MODE_CW];
-  assign o_sxn = mode_q[BLK_MODE_SXN];
-  assign o_syn = mode_q[BLK_MODE_SYN];
-  assign o_q = mode_q[BLK_MODE_Q +: 2];
-  assign o_k = mode_q[BLK_MODE_K +: 3];
+  // The staged block: the BLK_MODE register's fields and the magnitudes.
+  assign o_blk[BLK_ARC] = mode_q[BLK_MODE_ARC];
+  assign o_blk[BLK_CW] = mode_q[BLK_MODE_CW];
+  assign o_blk[BLK_SXN] = mode_q[BLK_MODE_SXN];
+  assign o_blk[BLK_SYN] = mode_q[BLK_MODE_SYN];
+  assign o_blk[BLK_Q +: 2] = mode_q[BLK_MODE_Q +: 2];
+  assign o_blk[BLK_K +: 3] = mode_q[BLK_MODE_K +: 3];
+  assign o_blk[BLK_XS +: W] = xs_q;
+  assign o_blk[BLK_YS +: W] = ys_q;
+  assign o_blk[BLK_XE +: W] = xe_q;
+  assign o_blk[BLK_YE +: W] = ye_q;
 
   // Acknowledge: one clock after the strobe, never two in a row.
   always @(posedge i_clk) begin
@@ -85,10 +83,10 @@ module wb_regs #(
       o_setup <= R_DIR_SETUP[15:0];
       o_hold <= R_DIR_HOLD[15:0];
       mode_q <= R_BLK_MODE[8:0];
-      o_xs <= R_BLK_XS[W-1:0];
-      o_ys <= R_BLK_YS[W-1:0];
-      o_xe <= R_BLK_XE[W-1:0];
-      o_ye <= R_BLK_YE[W-1:0];
+      xs_q <= R_BLK_XS[W-1:0];
+      ys_q <= R_BLK_YS[W-1:0];
+      xe_q <= R_BLK_XE[W-1:0];
+      ye_q <= R_BLK_YE[W-1:0];
     end else if (wr) begin
       case (adr)
         A_CTRL: o_src <= i_wb_dat[CTRL_SRC +: 2];
@@ -98,10 +96,10 @@ module wb_regs #(
         A_DIR_SETUP: o_setup <= i_wb_dat[15:0];
         A_DIR_HOLD: o_hold <= i_wb_dat[15:0];
         A_BLK_MODE: mode_q <= i_wb_dat[8:0];
-        A_BLK_XS: o_xs <= i_wb_dat[W-1:0];
-        A_BLK_YS: o_ys <= i_wb_dat[W-1:0];
-        A_BLK_XE: o_xe <= i_wb_dat[W-1:0];
-        A_BLK_YE: o_ye <= i_wb_dat[W-1:0];
+        A_BLK_XS: xs_q <= i_wb_dat[W-1:0];
+        A_BLK_YS: ys_q <= i_wb_dat[W-1:0];
+        A_BLK_XE: xe_q <= i_wb_dat[W-1:0];
+        A_BLK_YE: ye_q <= i_wb_dat[W-1:0];
         default: ;
       endcase
     end
@@ -155,10 +153,10 @@ module wb_regs #(
         A_POS_Y: o_wb_dat <= i_pos_y;
         A_MOVES: o_wb_dat <= i_moves;
         A_BLK_MODE: o_wb_dat[8:0] <= mode_q;
-        A_BLK_XS: o_wb_dat[W-1:0] <= o_xs;
-        A_BLK_YS: o_wb_dat[W-1:0] <= o_ys;
-        A_BLK_XE: o_wb_dat[W-1:0] <= o_xe;
-        A_BLK_YE: o_wb_dat[W-1:0] <= o_ye;
+        A_BLK_XS: o_wb_dat[W-1:0] <= xs_q;
+        A_BLK_YS: o_wb_dat[W-1:0] <= ys_q;
+        A_BLK_XE: o_wb_dat[W-1:0] <= xe_q;
+        A_BLK_YE: o_wb_dat[W-1:0] <= ye_q;
         default: ;
       endcase
     end

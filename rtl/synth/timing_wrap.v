@@ -26,10 +26,16 @@ module timing_wrap (
   // W: the coordinate width of the interpolator designs.
 `ifdef DESIGN_DP
   localparam integer W = 24;
-  localparam integer NI = 36 + 8 * W;  // fields up to bit 33 + 8W, reset on top
+`include "interp_block.vh"
+  // cmd, valid, the prepared block from bit 2 (up to 28 + 8W), bits
+  // 29 + 8W .. 34 + 8W unused, reset on top.
+  localparam integer NI = 36 + 8 * W;
   localparam integer NO = 16 + 3 * W;
 `elsif DESIGN_CORE
   localparam integer W = 24;
+`include "interp_block.vh"
+  // abort, push, the block from bit 2 (up to 10 + 4W), clear, cmd, 3 bits
+  // unused, the four 16-bit step timings from 16 + 4W, reset on top.
   localparam integer NI = 16 + 4 * W + 64 + 1;
   localparam integer NO = 49;
 `elsif DESIGN_TOP
@@ -86,13 +92,7 @@ module timing_wrap (
 `ifdef DESIGN_DP
   interp_dp #(.W(W)) u_dut (
       .i_clk(i_clk), .i_rst(rst), .i_cmd(in_q[0]), .i_valid(in_q[1]), .o_ready(outs[0]),
-      .i_arc(in_q[2]), .i_cw(in_q[3]), .i_sxn(in_q[4]), .i_syn(in_q[5]),
-      .i_q(in_q[7:6]), .i_k(in_q[10:8]),
-      .i_ci(in_q[16 +: W]), .i_co(in_q[16 + W +: W]),
-      .i_sub(in_q[16 + 2 * W +: W + 1]), .i_add(in_q[17 + 3 * W +: W + 1]),
-      .i_ti1(in_q[18 + 4 * W +: W + 2]), .i_ti2(in_q[20 + 5 * W +: W + 2]),
-      .i_tim1(in_q[22 + 6 * W +: W + 2]), .i_to2(in_q[24 + 7 * W +: W + 2]),
-      .i_flags(in_q[26 + 8 * W +: 8]),
+      .i_pre(in_q[2 +: PRE_BITS]),
       .o_pulse(outs[1]), .o_pulse_y(outs[2]), .o_pulse_neg(outs[3]), .o_pulse_last(outs[4]),
       .o_busy(outs[5]), .o_xmag(outs[6 +: W]), .o_xneg(outs[6 + W]), .o_ymag(outs[7 + W +: W]),
       .o_yneg(outs[7 + 2 * W]), .o_d(outs[8 + 2 * W +: W + 2]), .o_q(outs[10 + 3 * W +: 2]),
@@ -103,19 +103,16 @@ module timing_wrap (
   // The state outputs are for test benches; timing is of the rest.
   interp_core #(.W(W), .QAW(4)) u_core (
       .i_clk(i_clk), .i_rst(rst), .i_abort(in_q[0]), .i_cmd(cmd_core),
-      .i_push(in_q[1]), .i_arc(in_q[2]), .i_cw(in_q[3]), .i_sxn(in_q[4]), .i_syn(in_q[5]),
-      .i_q(in_q[7:6]), .i_k(in_q[10:8]),
-      .i_xs(in_q[16 +: W]), .i_ys(in_q[16 + W +: W]), .i_xe(in_q[16 + 2 * W +: W]),
-      .i_ye(in_q[16 + 3 * W +: W]),
+      .i_push(in_q[1]), .i_blk(in_q[2 +: BLK_BITS]),
       .o_full(outs[4]), .o_level(outs[10:5]),
       .o_pulse(pulse), .o_pulse_y(pulse_y), .o_pulse_neg(pulse_neg), .o_pulse_last(outs[11]),
       .o_busy(busy), .o_xmag(), .o_xneg(), .o_ymag(), .o_yneg(), .o_d(), .o_q(), .o_k(), .o_arc()
   );
   step_out #(.TW(16)) u_out (
-      .i_clk(i_clk), .i_rst(rst), .i_clear(in_q[11]),
+      .i_clk(i_clk), .i_rst(rst), .i_clear(in_q[2 + BLK_BITS]),
       .i_len(in_q[16 + 4 * W +: 16]), .i_space(in_q[32 + 4 * W +: 16]),
       .i_setup(in_q[48 + 4 * W +: 16]), .i_hold(in_q[64 + 4 * W +: 16]),
-      .i_cmd(in_q[12]), .i_busy(busy), .o_cmd(cmd_core),
+      .i_cmd(in_q[3 + BLK_BITS]), .i_busy(busy), .o_cmd(cmd_core),
       .i_pulse(pulse), .i_pulse_y(pulse_y), .i_pulse_neg(pulse_neg),
       .o_step_x(outs[0]), .o_dir_x(outs[1]), .o_step_y(outs[2]), .o_dir_y(outs[3]),
       .o_overrun(outs[12]), .o_ovr_count(outs[44:13])

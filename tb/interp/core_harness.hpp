@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "harness.hpp"
@@ -22,6 +23,38 @@ struct Block {
   std::uint8_t q = 0, k = 0;
   std::uint64_t xs = 0, ys = 0, xe = 0, ye = 0;  // magnitudes
 };
+
+// The field offsets of interp_core's i_blk, as functions of W: the BLK_*
+// of rtl/interp/interp_block.vh (keep the two in step; the regression
+// fails on a mismatch).
+namespace blk {
+constexpr unsigned kArc = 0, kCw = 1, kSxn = 2, kSyn = 3;
+constexpr unsigned kQ = 4;  // 2 bits
+constexpr unsigned kK = 6;  // 3 bits
+constexpr unsigned xs(unsigned) { return 9; }  // W bits each
+constexpr unsigned ys(unsigned w) { return xs(w) + w; }
+constexpr unsigned xe(unsigned w) { return ys(w) + w; }
+constexpr unsigned ye(unsigned w) { return xe(w) + w; }
+constexpr unsigned bits(unsigned w) { return ye(w) + w; }
+}  // namespace blk
+
+// Sets bits [lsb, lsb + width) of a Verilated port to `value`: an integer
+// port (up to 64 bits: CData .. QData) or a VlWide (32-bit words, LSW
+// first).
+template <class P>
+void set_bits(P& port, unsigned lsb, unsigned width, std::uint64_t value) {
+  for (unsigned i = 0; i < width; ++i) {
+    const unsigned b = lsb + i;
+    const bool one = (value >> i) & 1u;
+    if constexpr (std::is_integral_v<P>) {
+      const P m = static_cast<P>(P{1} << b);
+      port = static_cast<P>(one ? (port | m) : (port & ~m));
+    } else {
+      const auto m = static_cast<std::uint32_t>(1u << (b % 32));
+      port[b / 32] = one ? (port[b / 32] | m) : (port[b / 32] & ~m);
+    }
+  }
+}
 
 // What the host does before writing a block: validate at width W and
 // derive the start quadrant and the crossings (Circular<W>::validate).
@@ -81,16 +114,18 @@ class CoreHarness : public tb::Harness<V> {
   bool push(const Block& b) {
     const bool full = top().o_full;
     top().i_push = 1;
-    top().i_arc = b.arc;
-    top().i_cw = b.cw;
-    top().i_sxn = b.sxn;
-    top().i_syn = b.syn;
-    top().i_q = b.q;
-    top().i_k = b.k;
-    top().i_xs = b.xs;
-    top().i_ys = b.ys;
-    top().i_xe = b.xe;
-    top().i_ye = b.ye;
+    auto& p = top().i_blk;
+    static_assert(sizeof(p) * 8 >= blk::bits(W), "i_blk narrower than the block of interp_block.vh");
+    set_bits(p, blk::kArc, 1, b.arc);
+    set_bits(p, blk::kCw, 1, b.cw);
+    set_bits(p, blk::kSxn, 1, b.sxn);
+    set_bits(p, blk::kSyn, 1, b.syn);
+    set_bits(p, blk::kQ, 2, b.q);
+    set_bits(p, blk::kK, 3, b.k);
+    set_bits(p, blk::xs(W), W, b.xs);
+    set_bits(p, blk::ys(W), W, b.ys);
+    set_bits(p, blk::xe(W), W, b.xe);
+    set_bits(p, blk::ye(W), W, b.ye);
     tick();
     top().i_push = 0;
     return !full;

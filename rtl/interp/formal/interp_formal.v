@@ -27,6 +27,8 @@ module interp_formal #(
     input wire i_cmd_any
 );
 
+`include "interp_block.vh"
+
   localparam integer MAXC = (1 << W) - 1;
 
   reg f_arc, f_cw;
@@ -126,11 +128,23 @@ module interp_formal #(
   wire full;
   wire [2:0] level;
 
+  // The block as the host writes it: kind, sense, signs, start quadrant,
+  // crossings, magnitudes.
+  wire [BLK_BITS-1:0] blk;
+  assign blk[BLK_ARC] = f_arc;
+  assign blk[BLK_CW] = f_cw;
+  assign blk[BLK_SXN] = (f_xe < 0);
+  assign blk[BLK_SYN] = (f_ye < 0);
+  assign blk[BLK_Q +: 2] = qs;
+  assign blk[BLK_K +: 3] = k0;
+  assign blk[BLK_XS +: W] = axs[W-1:0];
+  assign blk[BLK_YS +: W] = ays[W-1:0];
+  assign blk[BLK_XE +: W] = axe[W-1:0];
+  assign blk[BLK_YE +: W] = aye[W-1:0];
+
   interp_core #(.W(W), .QAW(1)) dut (
       .i_clk(i_clk), .i_rst(rst), .i_abort(1'b0), .i_cmd(cmd),
-      .i_push(push), .i_arc(f_arc), .i_cw(f_cw), .i_sxn(f_xe < 0), .i_syn(f_ye < 0),
-      .i_q(qs), .i_k(k0),
-      .i_xs(axs[W-1:0]), .i_ys(ays[W-1:0]), .i_xe(axe[W-1:0]), .i_ye(aye[W-1:0]),
+      .i_push(push), .i_blk(blk),
       .o_full(full), .o_level(level),
       .o_pulse(pulse), .o_pulse_y(pulse_y), .o_pulse_neg(pulse_neg), .o_pulse_last(pulse_last),
       .o_busy(busy), .o_xmag(xmag), .o_xneg(xneg), .o_ymag(ymag), .o_yneg(yneg),
