@@ -111,7 +111,7 @@ Suite combined(const std::string& names) {
 }
 
 bool engine_runs_at(const std::string& engine, double rate_pps) {
-  if (engine == "iss" || engine == "8085") return rate_pps <= kMaxRate8085;
+  if (engine == "iss" || engine == "cpu") return rate_pps <= kMaxRate8085;
   return true;
 }
 

@@ -39,7 +39,7 @@ Suite combined(const std::string& names);
 
 // The engines a co-simulation can run, in report order.
 inline const std::vector<std::string>& engine_names() {
-  static const std::vector<std::string> names = {"model", "rtl", "iss", "8085"};
+  static const std::vector<std::string> names = {"model", "core", "iss", "cpu"};
   return names;
 }
 

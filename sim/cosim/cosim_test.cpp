@@ -85,21 +85,21 @@ TEST(Scoreboard, IdenticalStreamPasses) {
 TEST(Scoreboard, DroppedPulseIsTheFirstDivergence) {
   auto ps = pulses(kFig2);
   ps.erase(ps.begin() + 6);  // pulse 7 (+X) missing: the engine's 7th is +Y
-  const Row r = judge(fig2(), expect(fig2()), 4e3, commands(11), run_of("rtl", ps, 1));
+  const Row r = judge(fig2(), expect(fig2()), 4e3, commands(11), run_of("core", ps, 1));
   EXPECT_EQ(r.verdict, Verdict::Fail);
   ASSERT_TRUE(r.divergence);
   EXPECT_EQ(r.divergence->index, 7u);
-  EXPECT_EQ(r.divergence->summary, "pulse 7: model +X, rtl +Y");
+  EXPECT_EQ(r.divergence->summary, "pulse 7: model +X, core +Y");
   EXPECT_NE(r.divergence->context.find("> #7"), std::string::npos) << r.divergence->context;
 }
 
 TEST(Scoreboard, SwappedPulsesAreCaught) {
   auto ps = pulses(kFig5);
   std::swap(ps[4], ps[5]);  // +Y -X becomes -X +Y at pulses 5, 6
-  const Row r = judge(fig5(), expect(fig5()), 1e3, commands(12), run_of("8085", ps, 0));
+  const Row r = judge(fig5(), expect(fig5()), 1e3, commands(12), run_of("cpu", ps, 0));
   EXPECT_EQ(r.verdict, Verdict::Fail);
   ASSERT_TRUE(r.divergence);
-  EXPECT_EQ(r.divergence->summary, "pulse 5: model +Y, 8085 -X");
+  EXPECT_EQ(r.divergence->summary, "pulse 5: model +Y, cpu -X");
   EXPECT_EQ(r.mismatches, 2u);
 }
 
@@ -115,25 +115,25 @@ TEST(Scoreboard, ExtraPulseIsAMismatch) {
 TEST(Scoreboard, LossesFlaggedOneForOneAreFlaggedNotFailed) {
   auto ps = pulses(kFig2);
   ps.resize(8);  // a prefix: 3 command pulses gave nothing
-  const Row ok = judge(fig2(), expect(fig2()), 50e3, commands(11), run_of("8085", ps, 3));
+  const Row ok = judge(fig2(), expect(fig2()), 50e3, commands(11), run_of("cpu", ps, 3));
   EXPECT_EQ(ok.verdict, Verdict::Flagged) << ok.note;
   EXPECT_EQ(ok.lost, 3u);
-  const Row under = judge(fig2(), expect(fig2()), 50e3, commands(11), run_of("8085", ps, 2));
+  const Row under = judge(fig2(), expect(fig2()), 50e3, commands(11), run_of("cpu", ps, 2));
   EXPECT_EQ(under.verdict, Verdict::Fail);
-  const Row over = judge(fig2(), expect(fig2()), 50e3, commands(11), run_of("8085", pulses(kFig2), 1));
+  const Row over = judge(fig2(), expect(fig2()), 50e3, commands(11), run_of("cpu", pulses(kFig2), 1));
   EXPECT_EQ(over.verdict, Verdict::Fail);
 }
 
 TEST(Scoreboard, TheCoreMayNotLoseUpTo250kppsEvenIfFlagged) {
   auto ps = pulses(kFig2);
   ps.resize(10);
-  EXPECT_EQ(judge(fig2(), expect(fig2()), 250e3, commands(11), run_of("rtl", ps, 1)).verdict, Verdict::Fail);
-  EXPECT_EQ(judge(fig2(), expect(fig2()), 500e3, commands(11), run_of("rtl", ps, 1)).verdict, Verdict::Flagged);
+  EXPECT_EQ(judge(fig2(), expect(fig2()), 250e3, commands(11), run_of("core", ps, 1)).verdict, Verdict::Fail);
+  EXPECT_EQ(judge(fig2(), expect(fig2()), 500e3, commands(11), run_of("core", ps, 1)).verdict, Verdict::Flagged);
   EXPECT_EQ(judge(fig2(), expect(fig2()), 1e3, commands(11), run_of("iss", ps, 1)).verdict, Verdict::Fail);
 }
 
 TEST(Scoreboard, WrongFinalPositionFails) {
-  auto run = run_of("rtl", pulses(kFig2), 0);
+  auto run = run_of("core", pulses(kFig2), 0);
   run.position_known = true;
   run.x = 6;
   run.y = 4;
@@ -157,7 +157,7 @@ TEST(Options, BadInputIsAOneLineUsageError) {
   EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "fast"}, help), UsageError);
   EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "0"}, help), UsageError);
   EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "1k", "--sweep"}, help), UsageError);
-  EXPECT_THROW(parse_options({"--suite", "paper", "--sweep", "--inject", "rtl:melt:3"}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--sweep", "--inject", "core:melt:3"}, help), UsageError);
   EXPECT_THROW(parse_options({"--suite", "paper", "--sweep", "--case", "fig9"}, help), UsageError);
   const Options o = parse_options({"--suite", "paper", "--rate", "250k,1M,3.5k"}, help);
   EXPECT_EQ(o.rates, (std::vector<double>{250e3, 1e6, 3.5e3}));
@@ -260,13 +260,13 @@ TEST(CosimRun, ReducedSweepOfThePaperSuite) {
   ASSERT_EQ(rows.size(), 2u * 4u * 4u);
   for (const auto& r : rows) {
     EXPECT_NE(r.verdict, "FAIL") << r.case_name << " " << r.engine << " @ " << r.rate << ": " << r.summary;
-    if (r.engine == "model" || r.engine == "rtl") {
+    if (r.engine == "model" || r.engine == "core") {
       EXPECT_EQ(r.lost, 0u) << r.case_name << " " << r.engine << " @ " << r.rate;
       EXPECT_EQ(r.mismatches, 0u);
     }
   }
   for (const char* c : {"fig2", "fig5"}) {
-    for (const char* e : {"iss", "8085"}) {
+    for (const char* e : {"iss", "cpu"}) {
       const ChildRow* slow = find(rows, c, e, 1e3);
       const ChildRow* fast = find(rows, c, e, 250e3);
       ASSERT_TRUE(slow && fast);
@@ -280,7 +280,7 @@ TEST(CosimRun, ReducedSweepOfThePaperSuite) {
     // an instruction's I/O at its first T-state, the board at the real one).
     for (double rate : rates) {
       const ChildRow* iss = find(rows, c, "iss", rate);
-      const ChildRow* board = find(rows, c, "8085", rate);
+      const ChildRow* board = find(rows, c, "cpu", rate);
       ASSERT_TRUE(iss && board);
       EXPECT_EQ(iss->verdict, board->verdict) << c << " @ " << rate;
       if (iss->lost == 0 || board->lost == 0) {
@@ -288,7 +288,7 @@ TEST(CosimRun, ReducedSweepOfThePaperSuite) {
       }
     }
     // The core answers within a few of its 20 ns clocks: well inside 4 us.
-    const ChildRow* core = find(rows, c, "rtl", 250e3);
+    const ChildRow* core = find(rows, c, "core", 250e3);
     ASSERT_TRUE(core);
     EXPECT_GT(core->lat_min, 0.0);
     EXPECT_LT(core->lat_max, 1.0);
@@ -325,11 +325,11 @@ TEST(CosimRun, DroppedPulseOnTheIssIsCaught) {
 }
 
 TEST(CosimRun, SwappedPulsesOnTheCoreAreCaught) {
-  expect_caught(run_with_fault("rtl:swap:5", 250e3), "fig5", "rtl", 250e3, 5, "pulse 5: model +Y, rtl -X");
+  expect_caught(run_with_fault("core:swap:5", 250e3), "fig5", "core", 250e3, 5, "pulse 5: model +Y, core -X");
 }
 
 TEST(CosimRun, FlippedSignOnTheBoardIsCaught) {
-  expect_caught(run_with_fault("8085:flip:12", 1e3, {"fig5"}), "fig5", "8085", 1e3, 12, "pulse 12: model -X, 8085 +X");
+  expect_caught(run_with_fault("cpu:flip:12", 1e3, {"fig5"}), "fig5", "cpu", 1e3, 12, "pulse 12: model -X, cpu +X");
 }
 
 // The core's clock runs only after command pulses and bus accesses (a
@@ -339,7 +339,7 @@ TEST(CosimRun, GatedCoreClockEqualsFreeRunning) {
   o.suite = "smoke";
   o.cases = {"arc-3q"};
   o.rates = {20e3, 1e6};
-  o.engines = {"model", "rtl"};
+  o.engines = {"model", "core"};
   const auto gated = run_child(o);
   o.free_clock = true;
   const auto free = run_child(o);

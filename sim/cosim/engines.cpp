@@ -9,6 +9,7 @@
 
 #include "Vcosim_board.h"
 #include "Vcosim_interp.h"
+#include "interp_regs.h"
 #include "sw8085/interp/host.hpp"
 #include "sw8085/interp/mailbox.hpp"
 
@@ -194,16 +195,11 @@ void VerilatedCosimEngine::on_step() {
   last_y_ = y;
 }
 
-// --- rtl: interp_top -----------------------------------------------------------------
+// --- core: interp_top -----------------------------------------------------------------
 
-namespace reg {
-// docs/regmap.md (rtl/interp/regmap.def): byte offsets of 32-bit words.
-constexpr std::uint32_t kCtrl = 0x08, kStatus = 0x0C, kStepLen = 0x14, kStepSpace = 0x18, kDirSetup = 0x1C,
-                        kDirHold = 0x20, kOvrCount = 0x24, kPosX = 0x28, kPosY = 0x2C, kBlkMode = 0x34,
-                        kBlkXs = 0x38, kBlkYs = 0x3C, kBlkXe = 0x40, kBlkYe = 0x44, kPush = 0x48;
-constexpr std::uint32_t kSrcPin = 1, kCtrlClear = 1u << 3;
-constexpr std::uint32_t kStatusBusy = 1, kStatusFull = 4, kStatusReject = 16;
-}  // namespace reg
+// Register offsets and fields: the header generated from the one register
+// table, rtl/interp/regmap.def (docs/regmap.md).
+constexpr std::uint32_t kCtrlSrcPin = 1u << INTERP_CTRL_SRC_LSB;  // command source 1: the input pin
 
 CoreCosimEngine::CoreCosimEngine(sc_core::sc_module_name n, double f_clk_hz, StepTiming timing, bool free_clock)
     : VerilatedCosimEngine(n),
@@ -277,7 +273,7 @@ void CoreCosimEngine::wb_cycle(bool we, std::uint32_t adr, std::uint32_t v, std:
   adr_.write(adr);
   wdat_.write(v);
   for (int n = 0;; ++n) {
-    if (n > 32) throw std::runtime_error("rtl: no Wishbone ACK at offset " + std::to_string(adr));
+    if (n > 32) throw std::runtime_error("core: no Wishbone ACK at offset " + std::to_string(adr));
     keep_awake(64);
     sc_core::wait(clk_.negedge_event());
     if (ack_.read()) break;
@@ -302,10 +298,10 @@ void CoreCosimEngine::begin_case(const Case& c) {
   rst_.write(true);
   for (int i = 0; i < 4; ++i) sc_core::wait(clk_.negedge_event());
   rst_.write(false);
-  wb_write(reg::kStepLen, timing_.len);
-  wb_write(reg::kStepSpace, timing_.space);
-  wb_write(reg::kDirSetup, timing_.setup);
-  wb_write(reg::kDirHold, timing_.hold);
+  wb_write(INTERP_REG_STEP_LEN, timing_.len);
+  wb_write(INTERP_REG_STEP_SPACE, timing_.space);
+  wb_write(INTERP_REG_DIR_SETUP, timing_.setup);
+  wb_write(INTERP_REG_DIR_HOLD, timing_.hold);
   for (const auto& p : moves_) {
     // The host's part (docs/regmap.md): validate, then stage magnitudes,
     // signs, and for an arc the start quadrant and crossings.
@@ -315,33 +311,34 @@ void CoreCosimEngine::begin_case(const Case& c) {
     std::uint32_t mode = 0;
     if (m.is_arc()) {
       const auto plan = Circular<24>::validate(m.xs, m.ys, m.xe, m.ye, m.sense);
-      mode = 1u | (m.sense == Sense::CW ? 2u : 0u) | static_cast<std::uint32_t>(plan.q_start) << 4 |
-             static_cast<std::uint32_t>(plan.crossings) << 6;
-      wb_write(reg::kBlkXs, mag(m.xs));
-      wb_write(reg::kBlkYs, mag(m.ys));
+      mode = INTERP_BLK_MODE_ARC_MASK | (m.sense == Sense::CW ? INTERP_BLK_MODE_CW_MASK : 0u) |
+             static_cast<std::uint32_t>(plan.q_start) << INTERP_BLK_MODE_Q_LSB |
+             static_cast<std::uint32_t>(plan.crossings) << INTERP_BLK_MODE_K_LSB;
+      wb_write(INTERP_REG_BLK_XS, mag(m.xs));
+      wb_write(INTERP_REG_BLK_YS, mag(m.ys));
     } else {
-      mode = (m.xe < 0 ? 4u : 0u) | (m.ye < 0 ? 8u : 0u);
+      mode = (m.xe < 0 ? INTERP_BLK_MODE_SXN_MASK : 0u) | (m.ye < 0 ? INTERP_BLK_MODE_SYN_MASK : 0u);
     }
-    wb_write(reg::kBlkMode, mode);
-    wb_write(reg::kBlkXe, mag(m.xe));
-    wb_write(reg::kBlkYe, mag(m.ye));
-    if (wb_read(reg::kStatus) & reg::kStatusFull) throw std::runtime_error("rtl: move queue full");
-    wb_write(reg::kPush, 1);
-    if (wb_read(reg::kStatus) & reg::kStatusReject) throw std::runtime_error("rtl: PUSH refused");
+    wb_write(INTERP_REG_BLK_MODE, mode);
+    wb_write(INTERP_REG_BLK_XE, mag(m.xe));
+    wb_write(INTERP_REG_BLK_YE, mag(m.ye));
+    if (wb_read(INTERP_REG_STATUS) & INTERP_STATUS_FULL_MASK) throw std::runtime_error("core: move queue full");
+    wb_write(INTERP_REG_PUSH, 1);
+    if (wb_read(INTERP_REG_STATUS) & INTERP_STATUS_REJECT_MASK) throw std::runtime_error("core: PUSH refused");
   }
-  wb_write(reg::kCtrl, reg::kSrcPin);
+  wb_write(INTERP_REG_CTRL, kCtrlSrcPin);
   // The first block is loaded before the first command pulse.
-  for (int n = 0; !(wb_read(reg::kStatus) & reg::kStatusBusy); ++n)
-    if (n > 100) throw std::runtime_error("rtl: the core did not start the first move");
+  for (int n = 0; !(wb_read(INTERP_REG_STATUS) & INTERP_STATUS_BUSY_MASK); ++n)
+    if (n > 100) throw std::runtime_error("core: the core did not start the first move");
 }
 
 void CoreCosimEngine::end_case(EngineRun& run) {
   run.overruns_known = true;
-  run.overruns = wb_read(reg::kOvrCount);
+  run.overruns = wb_read(INTERP_REG_OVR_COUNT);
   run.position_known = true;
-  run.x = static_cast<std::int32_t>(wb_read(reg::kPosX));
-  run.y = static_cast<std::int32_t>(wb_read(reg::kPosY));
-  wb_write(reg::kCtrl, 0);
+  run.x = static_cast<std::int32_t>(wb_read(INTERP_REG_POS_X));
+  run.y = static_cast<std::int32_t>(wb_read(INTERP_REG_POS_Y));
+  wb_write(INTERP_REG_CTRL, 0);
 }
 
 // --- iss: the program on the C++ ISS ------------------------------------------------
@@ -462,7 +459,7 @@ void IssCosimEngine::end_case(EngineRun& run) {
   read_final_position(mailbox(), host_->codes(), queued_, slot_move_, moves_, run);
 }
 
-// --- 8085: board8085 --------------------------------------------------------------
+// --- cpu: board8085 --------------------------------------------------------------
 
 void write_rom_memh(const std::string& path) {
   const auto& img = sw8085::Program::builtin().image;
@@ -568,7 +565,7 @@ void BoardCosimEngine::queue_next() {
   const int lo = base - 4, hi = base + sw8085::kStatus;  // the slot spans base-4 .. base+0x3B
   for (int a = 0; a < 256; ++a)
     if (img[a] != 0 && (a < lo || a > hi))
-      throw std::logic_error("8085: sw8085::encode wrote outside its slot at " + std::to_string(a));
+      throw std::logic_error("cpu: sw8085::encode wrote outside its slot at " + std::to_string(a));
   for (int a = lo; a < hi; ++a) poke(static_cast<std::uint8_t>(a), img[a]);
   poke(static_cast<std::uint8_t>(hi), sw8085::kQueued);
   queued_.push_back(std::make_unique<sw8085::SlotMove>(sm));

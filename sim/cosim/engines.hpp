@@ -6,13 +6,13 @@
 //
 //   model   ModelCosimEngine: the golden model (model/interp) in an
 //           SC_MODULE, one step per rising edge
-//   rtl     CoreCosimEngine: interp_top (rtl/interp) Verilated for SystemC,
+//   core    CoreCosimEngine: interp_top (rtl/interp) Verilated for SystemC,
 //           50 MHz, command on its pin, moves pushed over Wishbone, step/dir
 //           pins observed
 //   iss     IssCosimEngine: the 8085 program (sw8085/interp) on the C++ ISS,
 //           T-state timed at 3 MHz, command on RST 7.5 (sw8085::Host does the
 //           board)
-//   8085    BoardCosimEngine: board8085 (rtl/board8085 + rtl/cpu8085)
+//   cpu     BoardCosimEngine: board8085 (rtl/board8085 + rtl/cpu8085)
 //           Verilated for SystemC, 3 MHz, command on RST 7.5 (synchronised),
 //           moves written through the mailbox port, step pins observed
 #pragma once
@@ -136,7 +136,7 @@ class ModelCosimEngine final : public CosimEngine {
 
 // --- the Verilated engines: step pins observed, an FST trace ------------------
 
-// What the two Verilated engines (rtl, 8085) share: their step/dir pins,
+// What the two Verilated engines (core, cpu) share: their step/dir pins,
 // watched for rising step edges, and an FST trace of the Verilated model.
 class VerilatedCosimEngine : public CosimEngine {
  public:
@@ -159,7 +159,7 @@ class VerilatedCosimEngine : public CosimEngine {
   bool last_x_ = false, last_y_ = false;
 };
 
-// --- rtl: interp_top ---------------------------------------------------------
+// --- core: interp_top ---------------------------------------------------------
 
 // Output stage timing of interp_top, in core clocks (STEP_LEN etc.).
 struct StepTiming {
@@ -171,7 +171,7 @@ class CoreCosimEngine final : public VerilatedCosimEngine {
   SC_HAS_PROCESS(CoreCosimEngine);
   CoreCosimEngine(sc_core::sc_module_name n, double f_clk_hz, StepTiming timing, bool free_clock);
   ~CoreCosimEngine() override;
-  std::string engine() const override { return "rtl"; }
+  std::string engine() const override { return "core"; }
   void begin_case(const Case& c) override;
   void end_case(EngineRun& run) override;
   std::uint64_t clocks() const { return clocks_; }
@@ -231,14 +231,14 @@ class IssCosimEngine final : public CosimEngine {
   sc_core::sc_event rise_, started_, stop_, parked_ev_;
 };
 
-// --- 8085: board8085 ---------------------------------------------------------
+// --- cpu: board8085 ---------------------------------------------------------
 
 class BoardCosimEngine final : public VerilatedCosimEngine {
  public:
   SC_HAS_PROCESS(BoardCosimEngine);
   BoardCosimEngine(sc_core::sc_module_name n, double f_clk_hz, const std::string& rom_memh);
   ~BoardCosimEngine() override;
-  std::string engine() const override { return "8085"; }
+  std::string engine() const override { return "cpu"; }
   void begin_case(const Case& c) override;
   void end_case(EngineRun& run) override;
 

@@ -47,10 +47,10 @@ double parse_rate(const std::string& text, const std::string& what) {
 
 std::string usage() {
   return "usage: contour cosim --suite paper|smoke|full[,...] (--rate R[,R...] | --sweep) [--report DIR] [--trace]\n"
-         "         [--engines model,rtl,iss,8085] [--case NAME[,NAME...]] [--progress|--no-progress]\n"
+         "         [--engines model,core,iss,cpu] [--case NAME[,NAME...]] [--progress|--no-progress]\n"
          "         [--free-clock] [--step-len N] [--step-space N] [--inject ENGINE:drop|swap|flip:N]\n"
-         "  Co-simulates the golden model, the Verilog core (rtl), the 8085 program on the ISS (iss)\n"
-         "  and on the Verilog 8085 board (8085) on the same command pulse train; exit 0 only when\n"
+         "  Co-simulates the golden model, the Verilog core (core), the 8085 program on the ISS (iss)\n"
+         "  and on the Verilog 8085 board (cpu) on the same command pulse train; exit 0 only when\n"
          "  every required equivalence holds (docs/cosim.md).\n";
 }
 
@@ -117,7 +117,7 @@ void parse_engines(Parse& p) {
   for (const auto& e : split(v)) {
     bool known = false;
     for (const auto& n : engine_names()) known |= n == e;
-    if (!known) throw UsageError("--engines: unknown engine '" + e + "' (known: model,rtl,iss,8085)");
+    if (!known) throw UsageError("--engines: unknown engine '" + e + "' (known: model,core,iss,cpu)");
     p.o.engines.insert(e);
   }
   if (!p.o.engines.count("model")) p.o.engines.insert("model");  // the reference always runs

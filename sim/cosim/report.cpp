@@ -21,15 +21,15 @@ using plot::escape;
 
 const std::map<std::string, std::string>& engine_colors() {
   static const std::map<std::string, std::string> c = {
-      {"model", "#444444"}, {"rtl", "#1f77b4"}, {"iss", "#2ca02c"}, {"8085", "#d62728"}};
+      {"model", "#444444"}, {"core", "#1f77b4"}, {"iss", "#2ca02c"}, {"cpu", "#d62728"}};
   return c;
 }
 
 std::string engine_title(const std::string& e) {
   if (e == "model") return "model (golden C++ in an SC_MODULE)";
-  if (e == "rtl") return "rtl (Verilog core interp_top, Verilated --sc)";
+  if (e == "core") return "core (Verilog core interp_top, Verilated --sc)";
   if (e == "iss") return "iss (8085 program on the C++ ISS)";
-  if (e == "8085") return "8085 (8085 program on the Verilog board8085, Verilated --sc)";
+  if (e == "cpu") return "cpu (8085 program on the Verilog 8085 board board8085, Verilated --sc)";
   return e;
 }
 
@@ -401,7 +401,7 @@ std::string latency_cell(const Row* r) {
          fmt("%.3f", r->lat_max_us) + (r->latency_exact ? "" : "*") + "</td>";
 }
 
-// One rate of a case: each engine's verdict, then the rtl and 8085 latencies.
+// One rate of a case: each engine's verdict, then the core and cpu latencies.
 void write_rate_row(std::ostream& h, const ReportInput& in, const Case& c, double rate,
                     const std::vector<std::string>& engines) {
   h << "<tr><td>" << rate_label(rate) << "</td>";
@@ -412,8 +412,8 @@ void write_rate_row(std::ostream& h, const ReportInput& in, const Case& c, doubl
       h << "<td class=\"na\">-</td>";
       continue;
     }
-    if (e == "rtl") lat[0] = found;
-    if (e == "8085") lat[1] = found;
+    if (e == "core") lat[0] = found;
+    if (e == "cpu") lat[1] = found;
     h << "<td class=\"" << to_string(found->verdict) << "\" title=\"" << xml_attr(found->note) << "\">"
       << cell_text(*found) << "</td>";
   }
@@ -429,7 +429,7 @@ void write_html_case(std::ostream& h, const ReportInput& in, std::size_t ci, con
     h << (i ? ", " : "") << "<code>" << escape(describe(c.moves[i])) << "</code>";
   h << "; " << in.exps[ci].pulses.size() << " output pulses.</p>\n<table><tr><th>rate (pps)</th>";
   for (const auto& e : engines) h << "<th>" << escape(e) << "</th>";
-  h << "<th>rtl latency (us)</th><th>8085 latency (us)</th></tr>\n";
+  h << "<th>core latency (us)</th><th>cpu latency (us)</th></tr>\n";
   for (double rate : in.rates) write_rate_row(h, in, c, rate, engines);
   h << "</table>\n<p class=\"meta\">Latency: min / mean / max from a command pulse's rising edge to its output "
        "step pulse; * = pulses were lost, measured from the latest command pulse.</p>\n";

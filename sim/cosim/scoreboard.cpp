@@ -25,7 +25,7 @@ Expected expect(const Case& c) {
 
 bool loss_forbidden(const std::string& engine, double rate_pps) {
   if (engine == "model") return true;
-  if (engine == "rtl") return rate_pps <= kCoreRequiredRate;
+  if (engine == "core") return rate_pps <= kCoreRequiredRate;
   return rate_pps <= kRequiredRate8085;
 }
 

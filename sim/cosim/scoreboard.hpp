@@ -45,7 +45,7 @@ Expected expect(const Case& c);
 
 struct Divergence {
   std::uint64_t index = 0;  // 1-based output pulse number
-  std::string summary;      // one line: "pulse 3: model +X, rtl +Y"
+  std::string summary;      // one line: "pulse 3: model +X, core +Y"
   std::string context;      // a window of pulses on both sides, one per line
 };
 

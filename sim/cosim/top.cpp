@@ -26,10 +26,10 @@ struct Slot {
   std::unique_ptr<FaultInjector> fault;
 };
 
-// The SystemC module of the engine called `name` (model, rtl, iss, 8085).
+// The SystemC module of the engine called `name` (model, core, iss, cpu).
 std::unique_ptr<CosimEngine> make_engine(const std::string& name, const Options& opt, const std::string& rom) {
   if (name == "model") return std::make_unique<ModelCosimEngine>("model");
-  if (name == "rtl") return std::make_unique<CoreCosimEngine>("rtl", opt.core_hz, opt.timing, opt.free_clock);
+  if (name == "core") return std::make_unique<CoreCosimEngine>("core", opt.core_hz, opt.timing, opt.free_clock);
   if (name == "iss") return std::make_unique<IssCosimEngine>("iss", opt.cpu_hz);
   return std::make_unique<BoardCosimEngine>("board", opt.cpu_hz, rom);
 }
@@ -169,7 +169,7 @@ CosimOutcome run_cosim(const Options& opt) {
   if (!opt.report_dir.empty() || opt.trace) std::filesystem::create_directories(dir);
   const std::string rom = (std::filesystem::temp_directory_path() /
                            ("contour-cosim-rom-" + std::to_string(::getpid()) + ".memh")).string();
-  if (opt.engines.count("8085")) write_rom_memh(rom);
+  if (opt.engines.count("cpu")) write_rom_memh(rom);
   if (opt.trace) Verilated::traceEverOn(true);
   // sc_stop ends every run: not news.
   sc_core::sc_report_handler::set_actions("/OSCI/SystemC", sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
@@ -181,8 +181,8 @@ CosimOutcome run_cosim(const Options& opt) {
     if (opt.trace)
       for (auto& sl : top.slots()) {
         const std::string name = sl->engine->engine();
-        if (name == "rtl" || name == "8085") {
-          const std::string path = dir + "/" + (name == "rtl" ? "core" : "board8085") + ".fst";
+        if (name == "core" || name == "cpu") {
+          const std::string path = dir + "/" + (name == "core" ? "core" : "board8085") + ".fst";
           sl->engine->open_trace(path);
           out.files.push_back(path);
         }
@@ -195,7 +195,7 @@ CosimOutcome run_cosim(const Options& opt) {
     out.sim_seconds = sc_core::sc_time_stamp().to_seconds();
     out.rows = std::move(top.rows);
   }
-  if (opt.engines.count("8085")) std::filesystem::remove(rom);
+  if (opt.engines.count("cpu")) std::filesystem::remove(rom);
   for (const auto& r : out.rows) (r.acceptable() ? out.passed : out.failed)++;
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   if (!opt.report_dir.empty()) {

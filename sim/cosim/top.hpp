@@ -18,7 +18,7 @@ struct Options {
   std::string suite = "smoke";
   std::vector<double> rates;           // command rates, pulses/s (empty: the suite's sweep)
   std::vector<std::string> cases;      // only these cases (empty: all)
-  std::set<std::string> engines{"model", "rtl", "iss", "8085"};
+  std::set<std::string> engines{"model", "core", "iss", "cpu"};
   std::string report_dir;              // report.html/json, junit.xml ("" = none)
   bool trace = false;                  // FST of the Verilog parts into report_dir (or .)
   bool free_clock = false;             // clock the core every cycle, not only after command pulses
