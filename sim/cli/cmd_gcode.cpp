@@ -258,7 +258,7 @@ Request parse_request(const Args& a) {
   if (q.pulses) q.steps_per_mm = positive(a.option_or("steps-per-mm", "1000"), "--steps-per-mm");
   q.engine = a.option_or("engine", "model");
   if (q.pulses && !planner::pulse_stages().count(q.engine))
-    throw UsageError("--engine: unknown engine '" + q.engine + "' (one of " + stage_names() + ")");
+    throw UsageError(unknown_engine(q.engine, stage_names()));
   return q;
 }
 

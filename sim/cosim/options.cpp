@@ -117,7 +117,9 @@ void parse_engines(Parse& p) {
   for (const auto& e : split(v)) {
     bool known = false;
     for (const auto& n : engine_names()) known |= n == e;
-    if (!known) throw UsageError("--engines: unknown engine '" + e + "' (known: model,core,iss,cpu)");
+    if (!known)
+      throw UsageError("--engines: unknown engine '" + e + "' (known: model,core,iss,cpu)" +
+                       (e == "rtl" || e == "8085" ? "; the Verilog core is now 'core', the Verilog 8085 'cpu'" : ""));
     p.o.engines.insert(e);
   }
   if (!p.o.engines.count("model")) p.o.engines.insert("model");  // the reference always runs

@@ -2,7 +2,7 @@
 // datapath) at a small W. One move, chosen by the solver among every move
 // the host's validation accepts (the rules of Circular<W>::validate and
 // Linear<W>::validate, written out below), is pushed after reset; then the
-// command is held high (CMD_ANY: the command is any sequence).
+// command is held high.
 //
 // Asserted here, besides the datapath's own invariants (interp_dp.v,
 // `ifdef FORMAL`):
@@ -23,8 +23,7 @@ module interp_formal #(
     input wire signed [W+1:0] i_xs,
     input wire signed [W+1:0] i_ys,
     input wire signed [W+1:0] i_xe,
-    input wire signed [W+1:0] i_ye,
-    input wire i_cmd_any
+    input wire signed [W+1:0] i_ye
 );
 
 `include "interp_block.vh"
@@ -33,7 +32,6 @@ module interp_formal #(
 
   reg f_arc, f_cw;
   reg signed [W+1:0] f_xs, f_ys, f_xe, f_ye;
-  wire f_cmd_any = i_cmd_any;
 
   // ------------------------------------------------- the host's validation
   function [W+1:0] mag;
@@ -114,11 +112,7 @@ module interp_formal #(
 
   wire rst = (f_t == 2'd0);
   wire push = (f_t == 2'd1);  // the move is captured by now
-`ifdef CMD_ANY
-  wire cmd = f_cmd_any;
-`else
   wire cmd = 1'b1;
-`endif
 
   wire pulse, pulse_y, pulse_neg, pulse_last, busy, xneg, yneg, arc_o;
   wire [W-1:0] xmag, ymag;
