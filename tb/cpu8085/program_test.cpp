@@ -61,7 +61,7 @@ TEST(Rtl, OverrunsAreCountedOnTheVerilogCpu) {
   EXPECT_EQ(t.commands, t.pulses + t.overruns + t.idle_commands);
 }
 
-// The engine "8085": the board in Verilog.
+// The engine "cpu": the board in Verilog.
 TEST(Board, PaperExamplesSmallMovesQueueAndOverruns) {
   const i8085::MachineFactory board = board8085::make_board_machine;
   {
