@@ -11,6 +11,17 @@
 
 namespace contour::sw8085 {
 
+// Whether the host's validation at W = 24 accepts the move (a test that
+// sweeps moves skips the others, and counts the ones it ran).
+inline bool accepted(const Move& m) {
+  try {
+    validate<24>(m);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
 inline void expect_model_run(Host& h, const Move& m) {
   const RunResult want = run_model<24>(m);
   const RunResult got = h.run(m, nullptr, want.steps.size() + 1);

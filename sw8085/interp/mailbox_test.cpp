@@ -20,47 +20,28 @@ int sym(const std::string& name) {
 }
 
 TEST(Mailbox, OffsetsAreTheProgramsEqus) {
-  EXPECT_EQ(sym("MB_IDLE"), kIdleMode);
-  EXPECT_EQ(sym("MB_NEXT"), kNext);
-  EXPECT_EQ(sym("MB_ACTIVE"), kActive);
-  EXPECT_EQ(sym("MB_OVR"), kOverruns);
-  EXPECT_EQ(sym("MB_READY"), kReady);
-  EXPECT_EQ(sym("MB_IDLECNT"), kIdleCount);
-  EXPECT_EQ(sym("MB_LAYOUT"), kLayout);
-  EXPECT_EQ(sym("READY_MAGIC"), kReadyMagic);
-  EXPECT_EQ(sym("LAYOUT_VERSION"), kLayoutVersion);
-  EXPECT_EQ(sym("SLOT0"), kSlots[0]);
-  EXPECT_EQ(sym("SLOT1"), kSlots[1]);
-  EXPECT_EQ(sym("S_MODE"), kMode);
-  EXPECT_EQ(sym("S_STATUS"), kStatus);
-  EXPECT_EQ(sym("ST_QUEUED"), kQueued);
-  EXPECT_EQ(sym("ST_STARTED"), kStarted);
-  EXPECT_EQ(sym("PSTEP"), kPortStep);
-  EXPECT_EQ(sym("PEDGES"), kPortEdges);
-  EXPECT_EQ(sym("PDONE"), kPortDone);
-  EXPECT_EQ(sym("L_D0"), line::kD);
-  EXPECT_EQ(sym("L_RX0"), line::kRx[0]);
-  EXPECT_EQ(sym("L_RX1"), line::kRx[1]);
-  EXPECT_EQ(sym("L_RX2"), line::kRx[2]);
-  EXPECT_EQ(sym("L_RY0"), line::kRy[0]);
-  EXPECT_EQ(sym("L_RY1"), line::kRy[1]);
-  EXPECT_EQ(sym("L_RY2"), line::kRy[2]);
-  EXPECT_EQ(sym("L_PATX"), line::kPatX);
-  EXPECT_EQ(sym("L_PATY"), line::kPatY);
-  EXPECT_EQ(sym("L_AXES"), line::kAxes);
-  EXPECT_EQ(sym("L_NB"), line::kNotB);
-  EXPECT_EQ(sym("L_A"), line::kA);
-  EXPECT_EQ(sym("A_D0"), arc::kD);
-  EXPECT_EQ(sym("A_CX"), arc::kCx);
-  EXPECT_EQ(sym("A_EX"), arc::kEx);
-  EXPECT_EQ(sym("A_CY"), arc::kCy);
-  EXPECT_EQ(sym("A_EY"), arc::kEy);
-  EXPECT_EQ(sym("A_Q"), arc::kQ);
-  EXPECT_EQ(sym("A_K"), arc::kK);
-  EXPECT_EQ(sym("A_QSTEP"), arc::kQstep);
-  EXPECT_EQ(sym("A_PATT"), arc::kPatterns);
-  EXPECT_EQ(sym("A_PIN"), arc::kPin);
-  EXPECT_EQ(sym("A_POUT"), arc::kPout);
+  struct Equ {
+    const char* name;
+    int value;
+  };
+  // Grouped as the program defines them: the mailbox header and its magic
+  // values, a slot, the ports, a line's block, an arc's block.
+  const Equ equs[] = {
+      {"MB_IDLE", kIdleMode}, {"MB_NEXT", kNext}, {"MB_ACTIVE", kActive}, {"MB_OVR", kOverruns},
+      {"MB_READY", kReady}, {"MB_IDLECNT", kIdleCount}, {"MB_LAYOUT", kLayout},
+      {"READY_MAGIC", kReadyMagic}, {"LAYOUT_VERSION", kLayoutVersion},
+      {"SLOT0", kSlots[0]}, {"SLOT1", kSlots[1]}, {"S_MODE", kMode}, {"S_STATUS", kStatus},
+      {"ST_QUEUED", kQueued}, {"ST_STARTED", kStarted},
+      {"PSTEP", kPortStep}, {"PEDGES", kPortEdges}, {"PDONE", kPortDone},
+      {"L_D0", line::kD}, {"L_RX0", line::kRx[0]}, {"L_RX1", line::kRx[1]}, {"L_RX2", line::kRx[2]},
+      {"L_RY0", line::kRy[0]}, {"L_RY1", line::kRy[1]}, {"L_RY2", line::kRy[2]},
+      {"L_PATX", line::kPatX}, {"L_PATY", line::kPatY}, {"L_AXES", line::kAxes}, {"L_NB", line::kNotB},
+      {"L_A", line::kA},
+      {"A_D0", arc::kD}, {"A_CX", arc::kCx}, {"A_EX", arc::kEx}, {"A_CY", arc::kCy}, {"A_EY", arc::kEy},
+      {"A_Q", arc::kQ}, {"A_K", arc::kK}, {"A_QSTEP", arc::kQstep}, {"A_PATT", arc::kPatterns},
+      {"A_PIN", arc::kPin}, {"A_POUT", arc::kPout},
+  };
+  for (const Equ& e : equs) EXPECT_EQ(sym(e.name), e.value) << e.name;
 }
 
 // asm80 lets a later definition replace an earlier one whose name differs
