@@ -19,18 +19,11 @@ module board8085 #(
     input  wire        i_rst,
     // command pulse (RST 7.5) and the other interrupt pins
     input  wire        i_cmd,
-    input  wire        i_trap,
-    input  wire        i_rst65,
-    input  wire        i_rst55,
-    input  wire        i_intr,
+    input  wire        i_trap, i_rst65, i_rst55, i_intr,
     input  wire [ 7:0] i_intr_vec,   // instruction byte(s) an INTA reads
-    // step outputs
-    output wire        o_step_x,
-    output wire        o_step_y,
-    output wire        o_step_z,
-    output wire        o_dir_x,
-    output wire        o_dir_y,
-    output wire        o_dir_z,
+    // step outputs, one axis each (OUT 10h, docs/board8085.md)
+    output wire        o_step_x, o_step_y, o_step_z,  // one-clock strobes
+    output wire        o_dir_x, o_dir_y, o_dir_z,     // 1: the negative direction
     output wire [ 7:0] o_done,
     output wire [ 7:0] o_debug,
     output wire        o_debug_we,

@@ -22,12 +22,8 @@ module board8085_io (
     // command pulses
     input  wire       i_cmd,
     // outputs
-    output reg        o_step_x,
-    output reg        o_step_y,
-    output reg        o_step_z,
-    output reg        o_dir_x,
-    output reg        o_dir_y,
-    output reg        o_dir_z,
+    output reg        o_step_x, o_step_y, o_step_z,  // one-clock strobes
+    output reg        o_dir_x, o_dir_y, o_dir_z,     // 1: the negative direction
     output reg  [7:0] o_done,
     output reg  [7:0] o_debug,
     output reg        o_debug_we
