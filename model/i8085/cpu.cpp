@@ -83,8 +83,7 @@ void Cpu::set_intr(bool level) { intr_level_ = level; }
 std::uint8_t Cpu::rim_value() const {
   const bool ie = rim_after_trap_ ? ie_before_trap_ : ie_;
   return static_cast<std::uint8_t>((masks_ & 0x07) | (ie ? 0x08 : 0) | (rst55_level_ ? 0x10 : 0) |
-                                   (rst65_level_ ? 0x20 : 0) | (rst75_latch_ ? 0x40 : 0) |
-                                   (sid_ ? 0x80 : 0));
+                                   (rst65_level_ ? 0x20 : 0) | (rst75_latch_ ? 0x40 : 0));
 }
 
 std::uint8_t Cpu::fetch8() {
@@ -257,10 +256,10 @@ void Cpu::daa() {
 }
 
 // An undocumented 8085 opcode: executed as a one-byte NOP of 4 T-states and
-// counted, so that a program relying on one is reported (docs/i8085.md).
+// flagged in last(), so that a program relying on one is reported
+// (docs/i8085.md).
 int Cpu::undocumented(std::uint8_t /*op*/) {
   last_.undocumented = true;
-  ++undocumented_;
   return 4;
 }
 

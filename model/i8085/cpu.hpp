@@ -108,17 +108,15 @@ class Cpu {
   void set_rst65(bool level);
   void set_rst55(bool level);
   void set_intr(bool level);
-  void set_sid(bool level) { sid_ = level; }
 
-  // What RIM would load into A now.
+  // What RIM would load into A now. SID (bit 7) reads 0: the model has no
+  // serial input.
   std::uint8_t rim_value() const;
   bool ie() const { return ie_; }
   bool sod() const { return sod_; }
   // Bits M7.5 M6.5 M5.5 of the interrupt mask (2..0).
   std::uint8_t masks() const { return masks_; }
   bool rst75_latched() const { return rst75_latch_; }
-  // Number of undocumented 8085 opcodes executed (as NOP) since construction.
-  std::uint64_t undocumented_count() const { return undocumented_; }
 
   Regs regs{};
 
@@ -155,9 +153,8 @@ class Cpu {
   bool trap_level_ = false, trap_latch_ = false;
   bool rst75_level_ = false, rst75_latch_ = false;
   bool rst65_level_ = false, rst55_level_ = false, intr_level_ = false;
-  bool sid_ = false, sod_ = false;
+  bool sod_ = false;
   bool rim_after_trap_ = false, ie_before_trap_ = false;
-  std::uint64_t undocumented_ = 0;
 };
 
 // Instruction length in bytes (1..3) of an opcode in a mode.
