@@ -136,8 +136,26 @@ class Cpu {
   std::uint8_t inr(std::uint8_t v);
   std::uint8_t dcr(std::uint8_t v);
   void daa();
+  bool is_8085() const { return mode_ == Mode::i8085; }
+  void set_carry(bool c);
+  void call(std::uint16_t a);
+  // Executes one opcode (its operand bytes fetched here); returns T-states.
   int execute(std::uint8_t op);
-  int undocumented(std::uint8_t op);
+  // The instruction groups of execute(), by opcode map column.
+  int halt_or_move(std::uint8_t op);
+  int nop_rim_sim(std::uint8_t op);
+  int lxi_or_dad(std::uint8_t op);
+  int load_or_store(int y);
+  int inx_or_dcx(std::uint8_t op);
+  int rotate_or_carry(int y);
+  int return_if(int cc);
+  int pop_or_return(std::uint8_t op);
+  int jump_if(int cc);
+  int jmp_out_in_xthl_xchg_di_ei(std::uint8_t op);
+  int xthl();
+  int call_if(int cc);
+  int push_or_call(std::uint8_t op);
+  int undocumented();
   Interrupt pending(bool maskable_allowed) const;
   int acknowledge(Interrupt irq);
 
