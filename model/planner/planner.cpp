@@ -20,14 +20,6 @@ constexpr double kTolMargin = 1e-3;
 constexpr double kNormalShare = 0.8660254037844386;  // sqrt(3)/2: a_t >= A/2
 constexpr double kOffsetAccelShare = 0.005;          // radial offset jump at a junction
 
-double seg_point_distance(Vec3 p, Vec3 a, Vec3 b) {
-  const Vec3 ab = b - a;
-  const double l2 = dot(ab, ab);
-  double t = l2 == 0 ? 0 : dot(p - a, ab) / l2;
-  t = std::clamp(t, 0.0, 1.0);
-  return norm(p - (a + t * ab));
-}
-
 void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument(what);
 }
@@ -329,7 +321,7 @@ double chord_error(const Plan& plan, const Sample& a, const Sample& b) {
     const double s0 = k == a.seg ? a.s : 0, s1 = k == b.seg ? b.s : g.length;
     for (int j = 0; j <= kN; ++j) {
       const Vec3 q = g.point(s0 + (s1 - s0) * j / kN);
-      err = std::max(err, seg_point_distance(q, a.p, b.p));
+      err = std::max(err, distance_to_segment(q, a.p, b.p));
     }
   }
   return err;
