@@ -108,17 +108,15 @@ class Cpu {
   void set_rst65(bool level);
   void set_rst55(bool level);
   void set_intr(bool level);
-  void set_sid(bool level) { sid_ = level; }
 
-  // What RIM would load into A now.
+  // What RIM would load into A now. SID (bit 7) reads 0: the model has no
+  // serial input.
   std::uint8_t rim_value() const;
   bool ie() const { return ie_; }
   bool sod() const { return sod_; }
   // Bits M7.5 M6.5 M5.5 of the interrupt mask (2..0).
   std::uint8_t masks() const { return masks_; }
   bool rst75_latched() const { return rst75_latch_; }
-  // Number of undocumented 8085 opcodes executed (as NOP) since construction.
-  std::uint64_t undocumented_count() const { return undocumented_; }
 
   Regs regs{};
 
@@ -138,8 +136,26 @@ class Cpu {
   std::uint8_t inr(std::uint8_t v);
   std::uint8_t dcr(std::uint8_t v);
   void daa();
+  bool is_8085() const { return mode_ == Mode::i8085; }
+  void set_carry(bool c);
+  void call(std::uint16_t a);
+  // Executes one opcode (its operand bytes fetched here); returns T-states.
   int execute(std::uint8_t op);
-  int undocumented(std::uint8_t op);
+  // The instruction groups of execute(), by opcode map column.
+  int halt_or_move(std::uint8_t op);
+  int nop_rim_sim(std::uint8_t op);
+  int lxi_or_dad(std::uint8_t op);
+  int load_or_store(int y);
+  int inx_or_dcx(std::uint8_t op);
+  int rotate_or_carry(int y);
+  int return_if(int cc);
+  int pop_or_return(std::uint8_t op);
+  int jump_if(int cc);
+  int jmp_out_in_xthl_xchg_di_ei(std::uint8_t op);
+  int xthl();
+  int call_if(int cc);
+  int push_or_call(std::uint8_t op);
+  int undocumented();
   Interrupt pending(bool maskable_allowed) const;
   int acknowledge(Interrupt irq);
 
@@ -155,9 +171,8 @@ class Cpu {
   bool trap_level_ = false, trap_latch_ = false;
   bool rst75_level_ = false, rst75_latch_ = false;
   bool rst65_level_ = false, rst55_level_ = false, intr_level_ = false;
-  bool sid_ = false, sod_ = false;
+  bool sod_ = false;
   bool rim_after_trap_ = false, ie_before_trap_ = false;
-  std::uint64_t undocumented_ = 0;
 };
 
 // Instruction length in bytes (1..3) of an opcode in a mode.

@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "i8085/cpu.hpp"
+#include "i8085/hex_text.hpp"
 
 namespace i8085 {
 
@@ -14,18 +15,6 @@ constexpr const char* kCc[8] = {"NZ", "Z", "NC", "C", "PO", "PE", "P", "M"};
 constexpr const char* kAlu[8] = {"ADD", "ADC", "SUB", "SBB", "ANA", "XRA", "ORA", "CMP"};
 constexpr const char* kAluImm[8] = {"ADI", "ACI", "SUI", "SBI", "ANI", "XRI", "ORI", "CPI"};
 constexpr const char* kRot[8] = {"RLC", "RRC", "RAL", "RAR", "DAA", "CMA", "STC", "CMC"};
-
-std::string hex2(unsigned v) {
-  char buf[8];
-  std::snprintf(buf, sizeof buf, "%02X", v & 0xFFu);
-  return buf;
-}
-
-std::string hex4(unsigned v) {
-  char buf[8];
-  std::snprintf(buf, sizeof buf, "%04X", v & 0xFFFFu);
-  return buf;
-}
 
 const char* undocumented_name(std::uint8_t op) {
   switch (op) {

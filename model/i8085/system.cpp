@@ -1,24 +1,8 @@
 #include "i8085/system.hpp"
 
-#include <cstdio>
+#include "i8085/hex_text.hpp"
 
 namespace i8085 {
-
-namespace {
-
-std::string hex4(unsigned v) {
-  char buf[8];
-  std::snprintf(buf, sizeof buf, "%04X", v & 0xFFFFu);
-  return buf;
-}
-
-std::string hex2(unsigned v) {
-  char buf[8];
-  std::snprintf(buf, sizeof buf, "%02X", v & 0xFFu);
-  return buf;
-}
-
-}  // namespace
 
 void run_step(Machine& m, RamBus& bus, const RunOptions& opt, RunResult& res) {
   const std::size_t outs_before = bus.outs.size();

@@ -72,10 +72,10 @@ class Circular {
   // Throws InputError naming the value and the rule unless the arc is in
   // the accepted domain (docs/algorithm.md, "Accepted arcs").
   static Plan validate(std::int64_t xs, std::int64_t ys, std::int64_t xe, std::int64_t ye, Sense s) {
-    check_coord(xs, "XS");
-    check_coord(ys, "YS");
-    check_coord(xe, "XE");
-    check_coord(ye, "YE");
+    check_coord(xs, "XS", W);
+    check_coord(ys, "YS", W);
+    check_coord(xe, "XE", W);
+    check_coord(ye, "YE", W);
     Plan p;
     p.r2 = xs * xs + ys * ys;
     if (p.r2 == 0) throw InputError("zero radius: the start point (0, 0) is the centre");
@@ -167,11 +167,6 @@ class Circular {
 
  private:
   static constexpr std::int64_t abs64(std::int64_t v) { return v < 0 ? -v : v; }
-  static void check_coord(std::int64_t v, const char* name) {
-    if (v > kMax || v < -kMax)
-      throw InputError(std::string(name) + " = " + std::to_string(v) + " is out of range: |" + name +
-                       "| must be <= 2^" + std::to_string(W) + " - 1 = " + std::to_string(kMax));
-  }
 
   static constexpr std::int64_t kDHalf = std::int64_t{1} << (kDBits - 1);  // D in [-kDHalf, kDHalf)
 

@@ -25,8 +25,8 @@ class Linear {
 
   // Throws InputError unless |xe|, |ye| <= 2^W - 1.
   static void validate(std::int64_t xe, std::int64_t ye) {
-    check_coord(xe, "XE");
-    check_coord(ye, "YE");
+    check_coord(xe, "XE", W);
+    check_coord(ye, "YE", W);
   }
 
   Linear(std::int64_t xe, std::int64_t ye) {
@@ -76,12 +76,6 @@ class Linear {
   }
 
  private:
-  static void check_coord(std::int64_t v, const char* name) {
-    if (v > kMax || v < -kMax)
-      throw InputError(std::string(name) + " = " + std::to_string(v) + " is out of range: |" + name +
-                       "| must be <= 2^" + std::to_string(W) + " - 1 = " + std::to_string(kMax));
-  }
-
   std::int64_t a_ = 0, b_ = 0;  // |Xe|, |Ye|
   std::int8_t sx_ = 1, sy_ = 1;
   std::int64_t x_ = 0, y_ = 0;  // distance travelled

@@ -59,9 +59,9 @@ class Linear3 {
 
   // Throws InputError unless |xe|, |ye|, |ze| <= 2^W - 1.
   static void validate(std::int64_t xe, std::int64_t ye, std::int64_t ze) {
-    check_coord(xe, "XE");
-    check_coord(ye, "YE");
-    check_coord(ze, "ZE");
+    check_coord(xe, "XE", W);
+    check_coord(ye, "YE", W);
+    check_coord(ze, "ZE", W);
   }
 
   Linear3(std::int64_t xe, std::int64_t ye, std::int64_t ze) {
@@ -91,24 +91,9 @@ class Linear3 {
     if (done_) return std::nullopt;
     Pulse p;
     switch (select()) {
-      case Axis::X:
-        ++x_;
-        dxy_ -= 2 * b_;
-        dxz_ -= 2 * c_;
-        p = Pulse{Axis::X, sx_};
-        break;
-      case Axis::Y:
-        ++y_;
-        dxy_ += 2 * a_;
-        dyz_ -= 2 * c_;
-        p = Pulse{Axis::Y, sy_};
-        break;
-      case Axis::Z:
-        ++z_;
-        dxz_ += 2 * a_;
-        dyz_ += 2 * b_;
-        p = Pulse{Axis::Z, sz_};
-        break;
+      case Axis::X: p = advance(x_, Pulse{Axis::X, sx_}, dxy_, -2 * b_, dxz_, -2 * c_); break;
+      case Axis::Y: p = advance(y_, Pulse{Axis::Y, sy_}, dxy_, 2 * a_, dyz_, -2 * c_); break;
+      case Axis::Z: p = advance(z_, Pulse{Axis::Z, sz_}, dxz_, 2 * a_, dyz_, 2 * b_); break;
     }
     ++n_;
     check_d(dxy_, "Dxy");
@@ -136,10 +121,14 @@ class Linear3 {
   }
 
  private:
-  static void check_coord(std::int64_t v, const char* name) {
-    if (v > kMax || v < -kMax)
-      throw InputError(std::string(name) + " = " + std::to_string(v) + " is out of range: |" + name +
-                       "| must be <= 2^" + std::to_string(W) + " - 1 = " + std::to_string(kMax));
+  // One step of an axis: its distance travelled + 1, the two discriminants
+  // that involve it updated (the "Updates" above).
+  static Pulse advance(std::int64_t& travelled, Pulse p, std::int64_t& d1, std::int64_t step1, std::int64_t& d2,
+                       std::int64_t step2) {
+    ++travelled;
+    d1 += step1;
+    d2 += step2;
+    return p;
   }
   static void check_d(std::int64_t d, const char* name) {
     if (!fits_signed(d, kDBits))

@@ -21,4 +21,11 @@ void throw_overflow(const char* what, const State& s) {
   throw OverflowError(std::string(what) + " overflows its width: " + to_string(s));
 }
 
+void check_coord(std::int64_t v, const char* name, unsigned width) {
+  const std::int64_t max = max_magnitude(width);
+  if (v > max || v < -max)
+    throw InputError(std::string(name) + " = " + std::to_string(v) + " is out of range: |" + name +
+                     "| must be <= 2^" + std::to_string(width) + " - 1 = " + std::to_string(max));
+}
+
 }  // namespace contour

@@ -56,6 +56,10 @@ class OverflowError : public std::logic_error {
 // Largest magnitude a W-bit register holds: 2^W - 1.
 constexpr std::int64_t max_magnitude(unsigned width) { return (std::int64_t{1} << width) - 1; }
 
+// Throws InputError unless |v| <= max_magnitude(width); `name` is the
+// input's name in the message ("XE").
+void check_coord(std::int64_t v, const char* name, unsigned width);
+
 // True when v fits in a `bits`-wide two's-complement register.
 constexpr bool fits_signed(std::int64_t v, unsigned bits) {
   return v >= -(std::int64_t{1} << (bits - 1)) && v < (std::int64_t{1} << (bits - 1));

@@ -23,15 +23,15 @@ double wrap(double a) {
   return a < 0 ? a + kTwoPi : a;
 }
 
-double seg_point_distance(Vec3 p, Vec3 a, Vec3 b) {
+}  // namespace
+
+double distance_to_segment(Vec3 p, Vec3 a, Vec3 b) {
   const Vec3 ab = b - a;
   const double l2 = dot(ab, ab);
   double t = l2 == 0 ? 0 : dot(p - a, ab) / l2;
   t = std::clamp(t, 0.0, 1.0);
   return norm(p - (a + t * ab));
 }
-
-}  // namespace
 
 Segment make_segment(const gcode::Block& b) {
   Segment g;
@@ -144,7 +144,7 @@ double Segment::curvature_radius() const {
 }
 
 double Segment::distance(const Vec3& p) const {
-  if (kind == Kind::Line) return seg_point_distance(p, start, end);
+  if (kind == Kind::Line) return distance_to_segment(p, start, end);
   if (!helix()) {
     const Vec3 w = p - origin;
     const Vec3 nn = cross(u_hat, v_hat);

@@ -68,6 +68,9 @@ struct Segment {
   double distance(const Vec3& p) const;
 };
 
+// Distance from p to the straight segment a-b.
+double distance_to_segment(Vec3 p, Vec3 a, Vec3 b);
+
 // Builds the geometry of one block. Throws std::invalid_argument for a block
 // the reader should have rejected (the reader checks every case first).
 Segment make_segment(const gcode::Block& b);

@@ -20,14 +20,6 @@ constexpr double kTolMargin = 1e-3;
 constexpr double kNormalShare = 0.8660254037844386;  // sqrt(3)/2: a_t >= A/2
 constexpr double kOffsetAccelShare = 0.005;          // radial offset jump at a junction
 
-double seg_point_distance(Vec3 p, Vec3 a, Vec3 b) {
-  const Vec3 ab = b - a;
-  const double l2 = dot(ab, ab);
-  double t = l2 == 0 ? 0 : dot(p - a, ab) / l2;
-  t = std::clamp(t, 0.0, 1.0);
-  return norm(p - (a + t * ab));
-}
-
 void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument(what);
 }
@@ -104,6 +96,166 @@ double PlannedSegment::v_at(double t) const {
   return std::max(0.0, v_cruise - a_t * tau);
 }
 
+namespace {
+
+// Lowers a block's cruise cap to v, naming the reason, if v is lower.
+void lower_cap(PlannedSegment& ps, double v, Cap why) {
+  if (v < ps.v_cap) ps.v_cap = v, ps.cap = why;
+}
+
+// Line: each axis' velocity and acceleration limit over its direction share.
+void limit_line(PlannedSegment& ps, const Machine& mc) {
+  const Segment& g = ps.geom;
+  double a = kInf;
+  for (int i = 0; i < 3; ++i) {
+    const double d = std::fabs(g.dir[i]);
+    if (d < 1e-15) continue;
+    lower_cap(ps, mc.vmax[i] * (1 - kVelMargin) / d, Cap::AxisVelocity);
+    a = std::min(a, mc.amax[i] / d);
+  }
+  ps.a_t = a;
+  for (int i = 0; i < 3; ++i) ps.accel_use[i] = a * std::fabs(g.dir[i]);
+}
+
+// Planar arc: the plane acceleration bound A_plane, the centripetal cap, and
+// a_t = what A_plane leaves beside the centripetal acceleration. pr: each
+// axis' projection on the arc plane.
+void limit_planar_arc(PlannedSegment& ps, const Machine& mc, const Vec3& pr) {
+  double a_plane = kInf;
+  for (int i = 0; i < 3; ++i) {
+    if (pr[i] < 1e-15) continue;
+    a_plane = std::min(a_plane, mc.amax[i] / pr[i]);
+    lower_cap(ps, mc.vmax[i] * (1 - kVelMargin) / pr[i], Cap::AxisVelocity);
+  }
+  a_plane *= 1 - kArcAccelMargin;
+  lower_cap(ps, std::sqrt(kNormalShare * a_plane * ps.rho), Cap::Centripetal);
+  const double an = ps.v_cap * ps.v_cap / ps.rho;
+  ps.a_t = std::sqrt(std::max(0.0, a_plane * a_plane - an * an));
+  for (int i = 0; i < 3; ++i) ps.accel_use[i] = a_plane * pr[i];
+}
+
+// Helix: per axis, the tangential share c_i (bound on |tangent_i|) plus the
+// centripetal share on the plane projection.
+void limit_helix(PlannedSegment& ps, const Machine& mc, const Vec3& pr) {
+  const Segment& g = ps.geom;
+  const double rise = norm(g.rise);
+  const double beta = std::atan2(rise, g.radius * g.sweep);
+  const Vec3 rh = (1.0 / rise) * g.rise;
+  Vec3 c;  // bound on |tangent_i|
+  double a_plane = kInf;
+  for (int i = 0; i < 3; ++i) {
+    c[i] = std::cos(beta) * pr[i] + std::sin(beta) * std::fabs(rh[i]);
+    if (c[i] > 1e-15) lower_cap(ps, mc.vmax[i] * (1 - kVelMargin) / c[i], Cap::AxisVelocity);
+    if (pr[i] > 1e-15) a_plane = std::min(a_plane, mc.amax[i] * (1 - kArcAccelMargin) / pr[i]);
+  }
+  lower_cap(ps, std::sqrt(kNormalShare * a_plane * ps.rho), Cap::Centripetal);
+  const double an = ps.v_cap * ps.v_cap / ps.rho;
+  double at = kInf;
+  for (int i = 0; i < 3; ++i)
+    if (c[i] > 1e-15) at = std::min(at, (mc.amax[i] * (1 - kArcAccelMargin) - an * pr[i]) / c[i]);
+  ps.a_t = std::max(0.0, at);
+  for (int i = 0; i < 3; ++i) ps.accel_use[i] = ps.a_t * c[i] + an * pr[i];
+}
+
+// A block's geometry, cruise cap and tangential acceleration.
+PlannedSegment plan_segment(const gcode::Block& b, const Config& config, double eps) {
+  const Machine& mc = config.machine;
+  PlannedSegment ps;
+  ps.geom = make_segment(b);
+  const Segment& g = ps.geom;
+  ps.v_cap = g.rapid ? mc.rapid : b.feed_mm_s;
+  ps.cap = g.rapid ? Cap::Rapid : Cap::Feed;
+  if (g.kind == Segment::Kind::Line) {
+    limit_line(ps, mc);
+  } else {
+    ps.rho = g.curvature_radius();
+    Vec3 pr;  // projection of each axis on the arc plane
+    for (int i = 0; i < 3; ++i) pr[i] = std::hypot(g.u_hat[i], g.v_hat[i]);
+    lower_cap(ps, chord_length(config.chord, ps.rho, eps) / config.cycle_s, Cap::Chord);
+    if (!g.helix()) limit_planar_arc(ps, mc, pr);
+    else limit_helix(ps, mc, pr);
+  }
+  require(ps.a_t > 0 && ps.v_cap > 0, "line " + std::to_string(b.line) + ": no feasible speed");
+  return ps;
+}
+
+// The speed limit at the junction s1 -> s2 (planner.hpp, "junction limit").
+double junction_limit(const PlannedSegment& s1, const PlannedSegment& s2, const Config& config, double eps,
+                      double amin) {
+  const Machine& mc = config.machine;
+  const double T = config.cycle_s;
+  double lim = std::min(s1.v_cap, s2.v_cap);
+  const double amx = std::max(s1.a_t, s2.a_t);
+  const Vec3 t1 = s1.geom.tangent(s1.geom.length), t2 = s2.geom.tangent(0);
+  const double delta = std::acos(std::clamp(dot(t1, t2), -1.0, 1.0));
+  if (delta > 1e-9) {
+    lim = std::min(lim, std::max(0.0, 2 * eps / std::sin(delta / 2) / T - amx * T));
+    for (int i = 0; i < 3; ++i) {
+      const double dt = std::fabs(t2[i] - t1[i]);
+      if (dt < 1e-12) continue;
+      const double rem = mc.amax[i] - std::max(s1.accel_use[i], s2.accel_use[i]);
+      lim = std::min(lim, std::max(0.0, rem) * T / dt);
+    }
+  }
+  for (const PlannedSegment* s : {&s1, &s2}) {
+    if (s->geom.kind != Segment::Kind::Arc) continue;
+    lim = std::min(lim, std::max(0.0, chord_length(ChordMethod::Inside, s->rho, eps) / T - amx * T));
+    // vertex_offset ~ k L^2 / rho: keep its jump under kOffsetAccelShare of A.
+    const double x = kOffsetAccelShare * amin * T * T;
+    const double k = config.chord == ChordMethod::InsideOutside ? 1.0 / 16 : 1.0 / 8;
+    if (config.chord != ChordMethod::Inside)
+      lim = std::min(lim, std::max(0.0, std::sqrt(x * s->rho / k) / T - amx * T));
+  }
+  return lim;
+}
+
+// Backward then forward pass over the junction speeds J (J[k]: start of
+// segment k, J[n] = 0): every block can reach its end speed.
+void reachable_junction_speeds(const std::vector<PlannedSegment>& segs, std::vector<double>& J) {
+  const std::size_t n = segs.size();
+  for (std::size_t k = n; k-- > 0;) {
+    const PlannedSegment& s = segs[k];
+    J[k] = std::min({J[k], s.v_cap, std::sqrt(J[k + 1] * J[k + 1] + 2 * s.a_t * s.geom.length)});
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const PlannedSegment& s = segs[k];
+    J[k + 1] = std::min(J[k + 1], std::sqrt(J[k] * J[k] + 2 * s.a_t * s.geom.length));
+  }
+}
+
+// The trapezoid of a block between its start and end speeds.
+void shape_trapezoid(PlannedSegment& s, double v_start, double v_end) {
+  const double L = s.geom.length, a = s.a_t;
+  s.v_start = v_start;
+  s.v_end = v_end;
+  const double v_peak = std::sqrt((2 * a * L + s.v_start * s.v_start + s.v_end * s.v_end) / 2);
+  s.v_cruise = std::max({std::min(s.v_cap, v_peak), s.v_start, s.v_end});
+  s.s_acc = (s.v_cruise * s.v_cruise - s.v_start * s.v_start) / (2 * a);
+  const double s_dec = (s.v_cruise * s.v_cruise - s.v_end * s.v_end) / (2 * a);
+  s.s_cruise = std::max(0.0, L - s.s_acc - s_dec);
+  s.t_acc = (s.v_cruise - s.v_start) / a;
+  s.t_dec = (s.v_cruise - s.v_end) / a;
+  s.t_cruise = s.v_cruise > 0 ? s.s_cruise / s.v_cruise : 0;
+  s.duration = s.t_acc + s.t_cruise + s.t_dec;
+}
+
+// Places the blocks on the time axis; returns the total time.
+double schedule(std::vector<PlannedSegment>& segs, double T) {
+  double t = 0;
+  for (std::size_t k = 0; k < segs.size(); ++k) {
+    PlannedSegment& s = segs[k];
+    // After an exact stop the next block starts on a cycle boundary (the
+    // axes wait at rest for the rest of the cycle), so that a sample lands
+    // on the corner and no chord cuts it.
+    if (k > 0 && s.v_start == 0) t = std::ceil(t / T - 1e-9) * T;
+    s.t_begin = t;
+    t += s.duration;
+  }
+  return t;
+}
+
+}  // namespace
+
 Plan plan(const std::vector<gcode::Block>& blocks, const Config& config) {
   config.validate();
   Plan p;
@@ -112,130 +264,16 @@ Plan plan(const std::vector<gcode::Block>& blocks, const Config& config) {
   const double T = config.cycle_s;
   const double eps = config.tol_mm * (1 - kTolMargin);
   const double amin = std::min({mc.amax.x, mc.amax.y, mc.amax.z});
-
-  for (const auto& b : blocks) {
-    PlannedSegment ps;
-    ps.geom = make_segment(b);
-    const Segment& g = ps.geom;
-    const double F = g.rapid ? mc.rapid : b.feed_mm_s;
-    ps.v_cap = F;
-    ps.cap = g.rapid ? Cap::Rapid : Cap::Feed;
-    auto cap = [&](double v, Cap why) {
-      if (v < ps.v_cap) ps.v_cap = v, ps.cap = why;
-    };
-    if (g.kind == Segment::Kind::Line) {
-      double a = kInf;
-      for (int i = 0; i < 3; ++i) {
-        const double d = std::fabs(g.dir[i]);
-        if (d < 1e-15) continue;
-        cap(mc.vmax[i] * (1 - kVelMargin) / d, Cap::AxisVelocity);
-        a = std::min(a, mc.amax[i] / d);
-      }
-      ps.a_t = a;
-      for (int i = 0; i < 3; ++i) ps.accel_use[i] = a * std::fabs(g.dir[i]);
-    } else {
-      ps.rho = g.curvature_radius();
-      Vec3 pr;  // projection of each axis on the arc plane
-      for (int i = 0; i < 3; ++i) pr[i] = std::hypot(g.u_hat[i], g.v_hat[i]);
-      cap(chord_length(config.chord, ps.rho, eps) / T, Cap::Chord);
-      if (!g.helix()) {
-        double a_plane = kInf;
-        for (int i = 0; i < 3; ++i) {
-          if (pr[i] < 1e-15) continue;
-          a_plane = std::min(a_plane, mc.amax[i] / pr[i]);
-          cap(mc.vmax[i] * (1 - kVelMargin) / pr[i], Cap::AxisVelocity);
-        }
-        a_plane *= 1 - kArcAccelMargin;
-        cap(std::sqrt(kNormalShare * a_plane * ps.rho), Cap::Centripetal);
-        const double an = ps.v_cap * ps.v_cap / ps.rho;
-        ps.a_t = std::sqrt(std::max(0.0, a_plane * a_plane - an * an));
-        for (int i = 0; i < 3; ++i) ps.accel_use[i] = a_plane * pr[i];
-      } else {
-        const double rise = norm(g.rise);
-        const double beta = std::atan2(rise, g.radius * g.sweep);
-        const Vec3 rh = (1.0 / rise) * g.rise;
-        Vec3 c;  // bound on |tangent_i|
-        double a_plane = kInf;
-        for (int i = 0; i < 3; ++i) {
-          c[i] = std::cos(beta) * pr[i] + std::sin(beta) * std::fabs(rh[i]);
-          if (c[i] > 1e-15) cap(mc.vmax[i] * (1 - kVelMargin) / c[i], Cap::AxisVelocity);
-          if (pr[i] > 1e-15) a_plane = std::min(a_plane, mc.amax[i] * (1 - kArcAccelMargin) / pr[i]);
-        }
-        cap(std::sqrt(kNormalShare * a_plane * ps.rho), Cap::Centripetal);
-        const double an = ps.v_cap * ps.v_cap / ps.rho;
-        double at = kInf;
-        for (int i = 0; i < 3; ++i)
-          if (c[i] > 1e-15) at = std::min(at, (mc.amax[i] * (1 - kArcAccelMargin) - an * pr[i]) / c[i]);
-        ps.a_t = std::max(0.0, at);
-        for (int i = 0; i < 3; ++i) ps.accel_use[i] = ps.a_t * c[i] + an * pr[i];
-      }
-    }
-    require(ps.a_t > 0 && ps.v_cap > 0, "line " + std::to_string(b.line) + ": no feasible speed");
-    p.segs.push_back(ps);
-  }
+  for (const auto& b : blocks) p.segs.push_back(plan_segment(b, config, eps));
 
   // Junction limits. J[k] is the speed at the start of segment k; J[n] = 0.
   const std::size_t n = p.segs.size();
   std::vector<double> J(n + 1, 0.0);
-  for (std::size_t k = 1; k < n; ++k) {
-    const PlannedSegment& s1 = p.segs[k - 1];
-    const PlannedSegment& s2 = p.segs[k];
-    double lim = std::min(s1.v_cap, s2.v_cap);
-    const double amx = std::max(s1.a_t, s2.a_t);
-    const Vec3 t1 = s1.geom.tangent(s1.geom.length), t2 = s2.geom.tangent(0);
-    const double delta = std::acos(std::clamp(dot(t1, t2), -1.0, 1.0));
-    if (delta > 1e-9) {
-      lim = std::min(lim, std::max(0.0, 2 * eps / std::sin(delta / 2) / T - amx * T));
-      for (int i = 0; i < 3; ++i) {
-        const double dt = std::fabs(t2[i] - t1[i]);
-        if (dt < 1e-12) continue;
-        const double rem = mc.amax[i] - std::max(s1.accel_use[i], s2.accel_use[i]);
-        lim = std::min(lim, std::max(0.0, rem) * T / dt);
-      }
-    }
-    for (const PlannedSegment* s : {&s1, &s2}) {
-      if (s->geom.kind != Segment::Kind::Arc) continue;
-      lim = std::min(lim, std::max(0.0, chord_length(ChordMethod::Inside, s->rho, eps) / T - amx * T));
-      // vertex_offset ~ k L^2 / rho: keep its jump under kOffsetAccelShare of A.
-      const double x = kOffsetAccelShare * amin * T * T;
-      const double k = config.chord == ChordMethod::InsideOutside ? 1.0 / 16 : 1.0 / 8;
-      if (config.chord != ChordMethod::Inside) lim = std::min(lim, std::max(0.0, std::sqrt(x * s->rho / k) / T - amx * T));
-    }
-    J[k] = lim;
-  }
+  for (std::size_t k = 1; k < n; ++k) J[k] = junction_limit(p.segs[k - 1], p.segs[k], config, eps, amin);
   p.junction_limit = J;
-  // Backward then forward pass.
-  for (std::size_t k = n; k-- > 0;) {
-    const PlannedSegment& s = p.segs[k];
-    J[k] = std::min({J[k], s.v_cap, std::sqrt(J[k + 1] * J[k + 1] + 2 * s.a_t * s.geom.length)});
-  }
-  for (std::size_t k = 0; k < n; ++k) {
-    const PlannedSegment& s = p.segs[k];
-    J[k + 1] = std::min(J[k + 1], std::sqrt(J[k] * J[k] + 2 * s.a_t * s.geom.length));
-  }
-  // Trapezoids.
-  double t = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    PlannedSegment& s = p.segs[k];
-    const double L = s.geom.length, a = s.a_t;
-    s.v_start = J[k];
-    s.v_end = J[k + 1];
-    const double v_peak = std::sqrt((2 * a * L + s.v_start * s.v_start + s.v_end * s.v_end) / 2);
-    s.v_cruise = std::max({std::min(s.v_cap, v_peak), s.v_start, s.v_end});
-    s.s_acc = (s.v_cruise * s.v_cruise - s.v_start * s.v_start) / (2 * a);
-    const double s_dec = (s.v_cruise * s.v_cruise - s.v_end * s.v_end) / (2 * a);
-    s.s_cruise = std::max(0.0, L - s.s_acc - s_dec);
-    s.t_acc = (s.v_cruise - s.v_start) / a;
-    s.t_dec = (s.v_cruise - s.v_end) / a;
-    s.t_cruise = s.v_cruise > 0 ? s.s_cruise / s.v_cruise : 0;
-    s.duration = s.t_acc + s.t_cruise + s.t_dec;
-    // After an exact stop the next block starts on a cycle boundary (the
-    // axes wait at rest for the rest of the cycle), so that a sample lands
-    // on the corner and no chord cuts it.
-    if (k > 0 && s.v_start == 0) t = std::ceil(t / T - 1e-9) * T;
-    s.t_begin = t;
-    t += s.duration;
-  }
+  reachable_junction_speeds(p.segs, J);
+  for (std::size_t k = 0; k < n; ++k) shape_trapezoid(p.segs[k], J[k], J[k + 1]);
+  const double t = schedule(p.segs, T);
   p.total_time = t;
   require(std::isfinite(t) && t / T < 1e12,
           "the program takes " + std::to_string(t) + " s, more than 10^12 cycles of " + std::to_string(T) + " s");
@@ -329,7 +367,7 @@ double chord_error(const Plan& plan, const Sample& a, const Sample& b) {
     const double s0 = k == a.seg ? a.s : 0, s1 = k == b.seg ? b.s : g.length;
     for (int j = 0; j <= kN; ++j) {
       const Vec3 q = g.point(s0 + (s1 - s0) * j / kN);
-      err = std::max(err, seg_point_distance(q, a.p, b.p));
+      err = std::max(err, distance_to_segment(q, a.p, b.p));
     }
   }
   return err;

@@ -49,6 +49,163 @@ std::vector<Point> thin(const std::vector<Point>& pts, std::size_t limit) {
   return out;
 }
 
+// Plot margins, px: room for the y tick labels, the title and the x label.
+constexpr double kLeft = 70, kRight = 20, kTop = 40, kBottom = 55;
+
+// The data ranges and their mapping to the drawing area.
+struct Frame {
+  double left = kLeft, top = kTop;
+  double pw = 0, ph = 0;  // width, height of the drawing area
+  bool log_x = false;
+  Range rx, ry;           // rx in log10 units when log_x
+  double sx = 1, sy = 1;  // px per unit
+
+  double tx(double x) const { return log_x ? std::log10(std::max(x, 1e-300)) : x; }
+  double X(double x) const { return left + (tx(x) - rx.lo) * sx; }
+  double Y(double y) const { return top + ph - (y - ry.lo) * sy; }
+};
+
+// Ranges of the data with a margin of 5 % (so lines do not sit on the
+// frame), widened to equal scales when the plot asks for them.
+Frame fit_frame(const Plot& plot) {
+  Frame f;
+  f.pw = plot.width - kLeft - kRight;
+  f.ph = plot.height - kTop - kBottom;
+  f.log_x = plot.log_x;
+  Range rx, ry;
+  for (const auto& s : plot.series)
+    for (const auto& p : s.points) {
+      rx.add(f.tx(p.x));
+      ry.add(p.y);
+    }
+  if (rx.empty()) rx = Range{0, 1};
+  if (ry.empty()) ry = Range{0, 1};
+  if (rx.hi == rx.lo) rx = Range{rx.lo - 1, rx.hi + 1};
+  if (ry.hi == ry.lo) ry = Range{ry.lo - 1, ry.hi + 1};
+  const double mx = 0.05 * (rx.hi - rx.lo), my = 0.05 * (ry.hi - ry.lo);
+  f.rx = Range{rx.lo - mx, rx.hi + mx};
+  f.ry = Range{ry.lo - my, ry.hi + my};
+  f.sx = f.pw / (f.rx.hi - f.rx.lo);
+  f.sy = f.ph / (f.ry.hi - f.ry.lo);
+  if (plot.equal_aspect) {
+    const double s = std::min(f.sx, f.sy);
+    const double cx = (f.rx.lo + f.rx.hi) / 2, cy = (f.ry.lo + f.ry.hi) / 2;
+    f.rx = Range{cx - f.pw / s / 2, cx + f.pw / s / 2};
+    f.ry = Range{cy - f.ph / s / 2, cy + f.ph / s / 2};
+    f.sx = f.sy = s;
+  }
+  return f;
+}
+
+// Several plots inlined in one HTML page share one id namespace: name the
+// clip path after the plot's content (deterministic, distinct per plot).
+std::string clip_id(const Plot& plot, const Frame& f) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto mix = [&h](double v) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    h = (h ^ bits) * 1099511628211ull;
+  };
+  for (char c : plot.title) mix(c);
+  mix(f.rx.lo), mix(f.rx.hi), mix(f.ry.lo), mix(f.ry.hi), mix(plot.width), mix(plot.height);
+  for (const auto& s : plot.series)
+    for (const auto& p : thin(s.points, plot.max_points)) mix(p.x), mix(p.y);  // as drawn
+  char id[32];
+  std::snprintf(id, sizeof id, "frame%016llx", static_cast<unsigned long long>(h));
+  return id;
+}
+
+void write_header(std::ostream& o, const Plot& plot) {
+  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << plot.width << "\" height=\"" << plot.height
+    << "\" viewBox=\"0 0 " << plot.width << ' ' << plot.height
+    << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+    << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+    << "<text x=\"" << plot.width / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
+    << escape(plot.title) << "</text>\n";
+}
+
+// A vertical grid line at px, to `o`, and its label, to `labels`.
+void write_x_tick(std::ostream& o, std::ostream& labels, const Frame& f, double px, const std::string& label) {
+  o << "<line x1=\"" << px << "\" y1=\"" << f.top << "\" x2=\"" << px << "\" y2=\"" << f.top + f.ph << "\"/>\n";
+  labels << "<text x=\"" << px << "\" y=\"" << f.top + f.ph + 16 << "\" text-anchor=\"middle\">" << label
+         << "</text>\n";
+}
+
+// Grid lines and tick labels: decades on a log x axis, nice steps otherwise.
+void write_grid(std::ostream& o, const Frame& f) {
+  o << "<g stroke=\"#ddd\" stroke-width=\"1\">\n";
+  std::ostringstream labels;
+  if (f.log_x) {
+    for (double d = std::floor(f.rx.lo); d <= f.rx.hi; d += 1) {
+      if (d < f.rx.lo) continue;
+      write_x_tick(o, labels, f, f.left + (d - f.rx.lo) * f.sx, fmt(std::pow(10.0, d)));
+    }
+  } else {
+    const double step = nice_step(f.rx.hi - f.rx.lo, 8);
+    for (double v = std::ceil(f.rx.lo / step) * step; v <= f.rx.hi; v += step)
+      write_x_tick(o, labels, f, f.X(v), fmt(std::fabs(v) < step * 1e-9 ? 0 : v));
+  }
+  const double ystep = nice_step(f.ry.hi - f.ry.lo, 6);
+  for (double v = std::ceil(f.ry.lo / ystep) * ystep; v <= f.ry.hi; v += ystep) {
+    const double py = f.Y(v);
+    o << "<line x1=\"" << f.left << "\" y1=\"" << py << "\" x2=\"" << f.left + f.pw << "\" y2=\"" << py << "\"/>\n";
+    labels << "<text x=\"" << f.left - 6 << "\" y=\"" << py + 4 << "\" text-anchor=\"end\">"
+           << fmt(std::fabs(v) < ystep * 1e-9 ? 0 : v) << "</text>\n";
+  }
+  o << "</g>\n" << labels.str();
+}
+
+// The frame rectangle and the axis labels.
+void write_frame(std::ostream& o, const Plot& plot, const Frame& f) {
+  o << "<rect x=\"" << f.left << "\" y=\"" << f.top << "\" width=\"" << f.pw << "\" height=\"" << f.ph
+    << "\" fill=\"none\" stroke=\"#333\"/>\n";
+  o << "<text x=\"" << f.left + f.pw / 2 << "\" y=\"" << plot.height - 14 << "\" text-anchor=\"middle\">"
+    << escape(plot.x_label) << "</text>\n";
+  o << "<text transform=\"translate(16," << f.top + f.ph / 2 << ") rotate(-90)\" text-anchor=\"middle\">"
+    << escape(plot.y_label) << "</text>\n";
+}
+
+// Data, clipped to the frame.
+void write_series(std::ostream& o, const Plot& plot, const Frame& f) {
+  const std::string id = clip_id(plot, f);
+  o << "<clipPath id=\"" << id << "\"><rect x=\"" << f.left << "\" y=\"" << f.top << "\" width=\"" << f.pw
+    << "\" height=\"" << f.ph << "\"/></clipPath>\n<g clip-path=\"url(#" << id << ")\" fill=\"none\">\n";
+  for (const auto& full : plot.series) {
+    if (full.points.empty()) continue;
+    Series s = full;
+    s.points = thin(full.points, plot.max_points);
+    o << "<polyline stroke=\"" << s.color << "\" stroke-width=\"" << s.width << "\""
+      << (s.dashed ? " stroke-dasharray=\"6 4\"" : "") << " points=\"";
+    for (const auto& p : s.points) o << f.X(p.x) << ',' << f.Y(p.y) << ' ';
+    o << "\"/>\n";
+    if (s.markers)
+      for (const auto& p : s.points)
+        o << "<circle cx=\"" << f.X(p.x) << "\" cy=\"" << f.Y(p.y) << "\" r=\"2.5\" fill=\"" << s.color << "\"/>\n";
+  }
+  o << "</g>\n";
+}
+
+// Legend, on a translucent box so that it reads over the data.
+void write_legend(std::ostream& o, const Plot& plot, const Frame& f) {
+  std::size_t entries = 0, longest = 0;
+  for (const auto& s : plot.series)
+    if (!s.label.empty()) {
+      ++entries;
+      longest = std::max(longest, s.label.size());
+    }
+  if (entries > 0)
+    o << "<rect x=\"" << f.left + 4 << "\" y=\"" << f.top + 3 << "\" width=\"" << 44 + 7 * longest << "\" height=\""
+      << 16 * entries + 4 << "\" fill=\"white\" fill-opacity=\"0.85\" stroke=\"#ccc\"/>\n";
+  double ly = f.top + 14;
+  for (const auto& s : plot.series) {
+    if (s.label.empty()) continue;
+    o << "<line x1=\"" << f.left + 10 << "\" y1=\"" << ly - 4 << "\" x2=\"" << f.left + 34 << "\" y2=\"" << ly - 4
+      << "\" stroke=\"" << s.color << "\" stroke-width=\"2\"" << (s.dashed ? " stroke-dasharray=\"6 4\"" : "")
+      << "/>\n<text x=\"" << f.left + 40 << "\" y=\"" << ly << "\">" << escape(s.label) << "</text>\n";
+    ly += 16;
+  }
+}
+
 }  // namespace
 
 std::string escape(const std::string& text) {
@@ -66,126 +223,14 @@ std::string escape(const std::string& text) {
 }
 
 std::string render(const Plot& plot) {
-  const double left = 70, right = 20, top = 40, bottom = 55;
-  const double pw = plot.width - left - right, ph = plot.height - top - bottom;
-  auto tx = [&](double x) { return plot.log_x ? std::log10(std::max(x, 1e-300)) : x; };
-
-  Range rx, ry;
-  for (const auto& s : plot.series)
-    for (const auto& p : s.points) {
-      rx.add(tx(p.x));
-      ry.add(p.y);
-    }
-  if (rx.empty()) rx = Range{0, 1};
-  if (ry.empty()) ry = Range{0, 1};
-  if (rx.hi == rx.lo) rx = Range{rx.lo - 1, rx.hi + 1};
-  if (ry.hi == ry.lo) ry = Range{ry.lo - 1, ry.hi + 1};
-  // A margin of 5 % so lines do not sit on the frame.
-  const double mx = 0.05 * (rx.hi - rx.lo), my = 0.05 * (ry.hi - ry.lo);
-  rx = Range{rx.lo - mx, rx.hi + mx};
-  ry = Range{ry.lo - my, ry.hi + my};
-  double sx = pw / (rx.hi - rx.lo), sy = ph / (ry.hi - ry.lo);
-  if (plot.equal_aspect) {
-    const double s = std::min(sx, sy);
-    const double cx = (rx.lo + rx.hi) / 2, cy = (ry.lo + ry.hi) / 2;
-    rx = Range{cx - pw / s / 2, cx + pw / s / 2};
-    ry = Range{cy - ph / s / 2, cy + ph / s / 2};
-    sx = sy = s;
-  }
-  auto X = [&](double x) { return left + (tx(x) - rx.lo) * sx; };
-  auto Y = [&](double y) { return top + ph - (y - ry.lo) * sy; };
-
-  // Several plots inlined in one HTML page share one id namespace: name the
-  // clip path after the plot's content (deterministic, distinct per plot).
-  std::uint64_t h = 1469598103934665603ull;
-  auto mix = [&h](double v) {
-    std::uint64_t bits;
-    std::memcpy(&bits, &v, sizeof bits);
-    h = (h ^ bits) * 1099511628211ull;
-  };
-  for (char c : plot.title) mix(c);
-  mix(rx.lo), mix(rx.hi), mix(ry.lo), mix(ry.hi), mix(plot.width), mix(plot.height);
-  for (const auto& s : plot.series)
-    for (const auto& p : thin(s.points, plot.max_points)) mix(p.x), mix(p.y);  // as drawn
-  char clip_id[32];
-  std::snprintf(clip_id, sizeof clip_id, "frame%016llx", static_cast<unsigned long long>(h));
-
+  const Frame f = fit_frame(plot);
   std::ostringstream o;
   o.precision(6);
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << plot.width << "\" height=\"" << plot.height
-    << "\" viewBox=\"0 0 " << plot.width << ' ' << plot.height
-    << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
-    << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-    << "<text x=\"" << plot.width / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
-    << escape(plot.title) << "</text>\n";
-  // Grid and ticks.
-  o << "<g stroke=\"#ddd\" stroke-width=\"1\">\n";
-  std::ostringstream labels;
-  if (plot.log_x) {
-    for (double d = std::floor(rx.lo); d <= rx.hi; d += 1) {
-      if (d < rx.lo) continue;
-      const double px = left + (d - rx.lo) * sx;
-      o << "<line x1=\"" << px << "\" y1=\"" << top << "\" x2=\"" << px << "\" y2=\"" << top + ph << "\"/>\n";
-      labels << "<text x=\"" << px << "\" y=\"" << top + ph + 16 << "\" text-anchor=\"middle\">"
-             << fmt(std::pow(10.0, d)) << "</text>\n";
-    }
-  } else {
-    const double step = nice_step(rx.hi - rx.lo, 8);
-    for (double v = std::ceil(rx.lo / step) * step; v <= rx.hi; v += step) {
-      const double px = X(v);
-      o << "<line x1=\"" << px << "\" y1=\"" << top << "\" x2=\"" << px << "\" y2=\"" << top + ph << "\"/>\n";
-      labels << "<text x=\"" << px << "\" y=\"" << top + ph + 16 << "\" text-anchor=\"middle\">"
-             << fmt(std::fabs(v) < step * 1e-9 ? 0 : v) << "</text>\n";
-    }
-  }
-  const double ystep = nice_step(ry.hi - ry.lo, 6);
-  for (double v = std::ceil(ry.lo / ystep) * ystep; v <= ry.hi; v += ystep) {
-    const double py = Y(v);
-    o << "<line x1=\"" << left << "\" y1=\"" << py << "\" x2=\"" << left + pw << "\" y2=\"" << py << "\"/>\n";
-    labels << "<text x=\"" << left - 6 << "\" y=\"" << py + 4 << "\" text-anchor=\"end\">"
-           << fmt(std::fabs(v) < ystep * 1e-9 ? 0 : v) << "</text>\n";
-  }
-  o << "</g>\n" << labels.str();
-  o << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << pw << "\" height=\"" << ph
-    << "\" fill=\"none\" stroke=\"#333\"/>\n";
-  o << "<text x=\"" << left + pw / 2 << "\" y=\"" << plot.height - 14 << "\" text-anchor=\"middle\">"
-    << escape(plot.x_label) << "</text>\n";
-  o << "<text transform=\"translate(16," << top + ph / 2 << ") rotate(-90)\" text-anchor=\"middle\">"
-    << escape(plot.y_label) << "</text>\n";
-  // Data, clipped to the frame.
-  o << "<clipPath id=\"" << clip_id << "\"><rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << pw << "\" height=\""
-    << ph << "\"/></clipPath>\n<g clip-path=\"url(#" << clip_id << ")\" fill=\"none\">\n";
-  for (const auto& full : plot.series) {
-    if (full.points.empty()) continue;
-    Series s = full;
-    s.points = thin(full.points, plot.max_points);
-    o << "<polyline stroke=\"" << s.color << "\" stroke-width=\"" << s.width << "\""
-      << (s.dashed ? " stroke-dasharray=\"6 4\"" : "") << " points=\"";
-    for (const auto& p : s.points) o << X(p.x) << ',' << Y(p.y) << ' ';
-    o << "\"/>\n";
-    if (s.markers)
-      for (const auto& p : s.points)
-        o << "<circle cx=\"" << X(p.x) << "\" cy=\"" << Y(p.y) << "\" r=\"2.5\" fill=\"" << s.color << "\"/>\n";
-  }
-  o << "</g>\n";
-  // Legend, on a translucent box so that it reads over the data.
-  std::size_t entries = 0, longest = 0;
-  for (const auto& s : plot.series)
-    if (!s.label.empty()) {
-      ++entries;
-      longest = std::max(longest, s.label.size());
-    }
-  if (entries > 0)
-    o << "<rect x=\"" << left + 4 << "\" y=\"" << top + 3 << "\" width=\"" << 44 + 7 * longest << "\" height=\""
-      << 16 * entries + 4 << "\" fill=\"white\" fill-opacity=\"0.85\" stroke=\"#ccc\"/>\n";
-  double ly = top + 14;
-  for (const auto& s : plot.series) {
-    if (s.label.empty()) continue;
-    o << "<line x1=\"" << left + 10 << "\" y1=\"" << ly - 4 << "\" x2=\"" << left + 34 << "\" y2=\"" << ly - 4
-      << "\" stroke=\"" << s.color << "\" stroke-width=\"2\"" << (s.dashed ? " stroke-dasharray=\"6 4\"" : "")
-      << "/>\n<text x=\"" << left + 40 << "\" y=\"" << ly << "\">" << escape(s.label) << "</text>\n";
-    ly += 16;
-  }
+  write_header(o, plot);
+  write_grid(o, f);
+  write_frame(o, plot, f);
+  write_series(o, plot, f);
+  write_legend(o, plot, f);
   o << "</svg>\n";
   return o.str();
 }
