@@ -25,15 +25,6 @@ constexpr std::array<std::uint8_t, 256> kSzp = make_szp();
 
 std::uint8_t szp(unsigned v) { return kSzp[v & 0xFF]; }
 
-bool is_8085_undocumented(std::uint8_t op) {
-  switch (op) {
-    case 0x08: case 0x10: case 0x18: case 0x28: case 0x38:
-    case 0xCB: case 0xD9: case 0xDD: case 0xED: case 0xFD:
-      return true;
-    default:
-      return false;
-  }
-}
 
 // Opcode fields: x = bits 7-6, y = bits 5-3, z = bits 2-0; rp = bits 5-4,
 // a register pair (0 BC, 1 DE, 2 HL, 3 SP or PSW).
@@ -563,8 +554,18 @@ int Cpu::step() {
   return t;
 }
 
+bool is_undocumented_8085(std::uint8_t op) {
+  switch (op) {
+    case 0x08: case 0x10: case 0x18: case 0x28: case 0x38:
+    case 0xCB: case 0xD9: case 0xDD: case 0xED: case 0xFD:
+      return true;
+    default:
+      return false;
+  }
+}
+
 int instruction_length(std::uint8_t op, Mode mode) {
-  if (mode == Mode::i8085 && is_8085_undocumented(op)) return 1;
+  if (mode == Mode::i8085 && is_undocumented_8085(op)) return 1;
   const int x = op >> 6, z = op & 7;
   if (x == 0) {
     if (z == 1 && ((op >> 3) & 1) == 0) return 3;              // LXI

@@ -178,6 +178,11 @@ class Cpu {
 // Instruction length in bytes (1..3) of an opcode in a mode.
 int instruction_length(std::uint8_t op, Mode mode);
 
+// The ten opcodes the 8085 data sheet leaves undocumented (08 10 18 28 38
+// CB D9 DD ED FD), which this ISS runs as 4-T NOPs and flags
+// (Step::undocumented; docs/i8085.md).
+bool is_undocumented_8085(std::uint8_t op);
+
 // "MVI A,12", "LXI H,1234", "RST 7": upper case, hex operands without suffix.
 std::string disassemble(const std::array<std::uint8_t, 3>& bytes, Mode mode);
 

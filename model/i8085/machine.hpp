@@ -1,6 +1,7 @@
 // The 8085 behind `contour sim85`: an abstract machine, so that the ISS
-// (engine "iss") and a Verilated CPU (engine "rtl", registered by the RTL
-// side) run the same programs through the same runner and trace.
+// (engine "iss") and the Verilated CPU (engine "cpu", registered by
+// sim/cli/machine_cpu.cpp) run the same programs through the same runner and
+// trace.
 #pragma once
 
 #include <cstdint>

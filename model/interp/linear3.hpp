@@ -1,6 +1,6 @@
 // Paper A's linear interpolator extended to three axes (X, Y, Z), bit-accurate.
 //
-// Contract: docs/algorithm-3axis.md. One command pulse gives exactly one
+// Contract: docs/algorithm.md, "Linear on three axes". One command pulse gives exactly one
 // output pulse on one axis; after |Xe| + |Ye| + |Ze| pulses the end point is
 // reached exactly, and every point is within sqrt(3)/2 pulse of the segment.
 //

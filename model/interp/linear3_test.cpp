@@ -1,4 +1,4 @@
-// Linear3<W>: paper A's linear method on three axes (docs/algorithm-3axis.md).
+// Linear3<W>: paper A's linear method on three axes (docs/algorithm.md, "Linear on three axes").
 #include "interp/linear3.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // The two-stage interpolator: paper B's chords, one per control cycle, each
 // spread into single-axis pulses by the 3-axis reference-pulse linear
-// interpolator (Linear3, docs/algorithm-3axis.md).
+// interpolator (Linear3, docs/algorithm.md, "Linear on three axes").
 //
 // Stage 1 (planner.hpp) gives the cycle end points in mm. Each is rounded to
 // the nearest step (steps_per_mm), so rounding never accumulates; the

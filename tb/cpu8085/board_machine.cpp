@@ -107,7 +107,7 @@ class BoardMachine final : public i8085::Machine {
       s.length = static_cast<std::uint8_t>(i8085::instruction_length(s.bytes[0], i8085::Mode::i8085));
       for (int i = 1; i < s.length; ++i)
         s.bytes[static_cast<std::size_t>(i)] = bus_.read(static_cast<std::uint16_t>(s.pc + i));
-      s.undocumented = cpu8085::is_undocumented_8085(s.bytes[0]);
+      s.undocumented = i8085::is_undocumented_8085(s.bytes[0]);
     } else if (kind == cpu8085::RetireKind::acknowledge || kind == cpu8085::RetireKind::intr) {
       s.kind = i8085::StepKind::interrupt;
       s.irq = cpu8085::interrupt_of(top().o_dbg_irq);

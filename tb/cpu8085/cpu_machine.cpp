@@ -9,15 +9,6 @@
 
 namespace cpu8085 {
 
-bool is_undocumented_8085(std::uint8_t op) {
-  switch (op) {
-    case 0x08: case 0x10: case 0x18: case 0x28: case 0x38:
-    case 0xCB: case 0xD9: case 0xDD: case 0xED: case 0xFD:
-      return true;
-    default:
-      return false;
-  }
-}
 
 namespace {
 
@@ -138,7 +129,7 @@ class CpuMachine final : public i8085::Machine {
         s.bytes[static_cast<std::size_t>(i)] = i <= u.operands ? u.operand[static_cast<std::size_t>(i - 1)]
                                                                : bus_.read(static_cast<std::uint16_t>(s.pc + i));
       }
-      s.undocumented = is_undocumented_8085(u.opcode);
+      s.undocumented = i8085::is_undocumented_8085(u.opcode);
     } else if (kind == RetireKind::acknowledge || kind == RetireKind::intr) {
       s.kind = i8085::StepKind::interrupt;
       s.irq = interrupt_of(h_.top().o_dbg_irq);

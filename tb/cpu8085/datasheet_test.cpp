@@ -7,7 +7,6 @@
 
 #include "i8085/system.hpp"
 #include "cpu_machine.hpp"
-#include "debug_ports.hpp"
 
 namespace {
 
@@ -16,7 +15,7 @@ using i8085::Regs;
 // Data sheet T-states; `taken` selects the larger figure of Jcc / Ccc / Rcc.
 int datasheet_tstates(std::uint8_t op, bool taken) {
   const int x = op >> 6, y = (op >> 3) & 7, z = op & 7;
-  if (cpu8085::is_undocumented_8085(op)) return 4;
+  if (i8085::is_undocumented_8085(op)) return 4;
   if (op == 0x76) return 5;                                   // HLT
   if (x == 1) return (y == 6 || z == 6) ? 7 : 4;              // MOV
   if (x == 2) return z == 6 ? 7 : 4;                          // ALU r / M

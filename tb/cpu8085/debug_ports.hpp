@@ -29,8 +29,4 @@ inline i8085::Regs regs_of(std::uint64_t dbg_regs, std::uint16_t sp, std::uint16
   return {byte(7), byte(6), byte(5), byte(4), byte(3), byte(2), byte(1), byte(0), sp, pc};
 }
 
-// The opcodes the ISS runs as undocumented NOPs (docs/i8085.md); the RTL
-// runs them the same way and the machines flag them the same way.
-bool is_undocumented_8085(std::uint8_t op);
-
 }  // namespace cpu8085
