@@ -36,8 +36,7 @@ module board8085 #(
     // CPU bus and retire port, for testbenches
     output wire [15:0] o_cpu_addr,
     output wire [ 7:0] o_cpu_dout,
-    output wire        o_cpu_wr,
-    output wire        o_cpu_io,
+    output wire        o_cpu_wr, o_cpu_io,  // write strobe (T2); 1: I/O, 0: memory
     output wire        o_retire,
     output wire [ 1:0] o_dbg_kind,
     output wire [ 2:0] o_dbg_irq,

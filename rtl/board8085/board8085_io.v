@@ -16,8 +16,7 @@ module board8085_io (
     input  wire       i_rst,
     // CPU I/O write (the T2 strobe) and read address
     input  wire       i_we,
-    input  wire [7:0] i_port,
-    input  wire [7:0] i_wdata,
+    input  wire [7:0] i_port, i_wdata,
     output reg  [7:0] o_rdata,   // combinational: value of port i_port
     // command pulses
     input  wire       i_cmd,

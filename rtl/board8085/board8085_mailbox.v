@@ -15,13 +15,11 @@ module board8085_mailbox (
     input  wire       i_rst,
     // CPU side
     input  wire       i_cpu_we,
-    input  wire [7:0] i_cpu_addr,
-    input  wire [7:0] i_cpu_wdata,
+    input  wire [7:0] i_cpu_addr, i_cpu_wdata,
     output wire [7:0] o_cpu_rdata,
     // host side
     input  wire       i_host_we,
-    input  wire [7:0] i_host_addr,
-    input  wire [7:0] i_host_wdata,
+    input  wire [7:0] i_host_addr, i_host_wdata,
     output wire [7:0] o_host_rdata,
     output reg        o_overrun    // a host write was lost (sticky until reset)
 );

@@ -188,12 +188,19 @@ TEST(InterpCoreW8, ArcsEveryRadiusBothSenses) {
 
 // ------------------------------------------------------------ random W = 24
 
+// A seeded source of moves' coordinates: uniform in [-lim, lim], the same
+// sequence every run; `rng` for the other random choices of a test.
+struct Coords {
+  explicit Coords(std::uint64_t seed) : rng(seed) {}
+  std::int64_t operator()(std::int64_t lim) { return std::int64_t(rng() % (2 * lim + 1)) - lim; }
+  std::mt19937_64 rng;
+};
+
 TEST(InterpCoreW24, RandomLinesAndExtremes) {
   H24 h;
   constexpr std::int64_t M = Linear<24>::kMax;
-  std::mt19937_64 rng(20260124);
+  Coords any(20260124);
   std::vector<Move> moves;
-  auto any = [&](std::int64_t lim) { return std::int64_t(rng() % (2 * lim + 1)) - lim; };
   for (int i = 0; i < 400; ++i) moves.push_back(Move::line(any(3000), any(3000)));
   for (int i = 0; i < 40; ++i) moves.push_back(Move::line(any(M), any(200)));
   for (int i = 0; i < 40; ++i) moves.push_back(Move::line(any(200), any(M)));
@@ -210,9 +217,9 @@ TEST(InterpCoreW24, RandomLinesAndExtremes) {
 TEST(InterpCoreW24, RandomArcsAndExtremes) {
   H24 h;
   constexpr std::int64_t M = Circular<24>::kMax;
-  std::mt19937_64 rng(20260125);
+  Coords coord(20260125);
+  std::mt19937_64& rng = coord.rng;
   std::vector<Move> moves;
-  auto coord = [&](std::int64_t lim) { return std::int64_t(rng() % (2 * lim + 1)) - lim; };
   // Small circles, whole.
   for (int i = 0; i < 120; ++i) {
     const std::int64_t xs = coord(600), ys = coord(600);
