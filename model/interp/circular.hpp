@@ -66,7 +66,7 @@ class Circular {
     std::int64_t r2 = 0;  // R^2 = xs^2 + ys^2
     int q_start = 0;
     int q_end = 0;
-    int crossings = 0;    // k0, 0..4
+    int crossings = 0;    // the contract's k at the start, 0..4
   };
 
   // Throws InputError naming the value and the rule unless the arc is in
@@ -159,7 +159,7 @@ class Circular {
     s.y = quadrant_sign_y(q_) * mag_[1];
     s.d = d_;
     s.quadrant = static_cast<std::uint8_t>(q_);
-    s.crossings_left = static_cast<std::uint8_t>(k_ < 0 ? 0 : k_);
+    s.crossings = static_cast<std::uint8_t>(k_ < 0 ? 0 : k_);
     s.pulses = n_;
     s.done = k_ < 0;
     return s;

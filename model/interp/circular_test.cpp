@@ -60,7 +60,7 @@ TEST(Circular, EveryQuadrantIsFig5Rotated) {
 TEST(Circular, FullCircleReturnsToTheStartAndCrossesFourQuadrants) {
   for (Sense s : {Sense::CW, Sense::CCW}) {
     Circular<24> c(7, 3, 7, 3, s);
-    EXPECT_EQ(c.state().crossings_left, 4);
+    EXPECT_EQ(c.state().crossings, 4);
     int crossings = 0;
     std::uint8_t q = c.state().quadrant;
     while (c.step())

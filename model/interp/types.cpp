@@ -13,7 +13,7 @@ std::string to_string(const Pulse& p) {
 std::string to_string(const State& s) {
   std::ostringstream o;
   o << "x=" << s.x << " y=" << s.y << " D=" << s.d << " q=Q" << int(s.quadrant) + 1
-    << " k=" << int(s.crossings_left) << " n=" << s.pulses << (s.done ? " done" : "");
+    << " k=" << int(s.crossings) << " n=" << s.pulses << (s.done ? " done" : "");
   return o.str();
 }
 

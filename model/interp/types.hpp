@@ -27,7 +27,7 @@ struct State {
   std::int64_t y = 0;
   std::int64_t d = 0;              // discriminant D
   std::uint8_t quadrant = 0;       // arc: current quadrant 0..3 (Q1..Q4); line: 0
-  std::uint8_t crossings_left = 0; // arc: quadrant boundaries still to cross
+  std::uint8_t crossings = 0;      // arc: quadrant boundaries still to cross (the contract's k)
   std::uint64_t pulses = 0;        // output pulses so far
   bool done = false;
   friend bool operator==(const State&, const State&) = default;

@@ -35,7 +35,7 @@ const char* kCommonHelp =
 std::string json_state(const State& s) {
   std::ostringstream o;
   o << "{\"x\": " << s.x << ", \"y\": " << s.y << ", \"d\": " << s.d << ", \"quadrant\": " << int(s.quadrant)
-    << ", \"crossings_left\": " << int(s.crossings_left) << ", \"pulses\": " << s.pulses
+    << ", \"crossings\": " << int(s.crossings) << ", \"pulses\": " << s.pulses
     << ", \"done\": " << (s.done ? "true" : "false") << "}";
   return o.str();
 }

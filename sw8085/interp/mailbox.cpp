@@ -183,7 +183,7 @@ State decode(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Co
   const int q = mb[at(base, arc::kQ)];
   if (q > 3) throw bad("quadrant " + std::to_string(q) + " out of range");
   s.quadrant = static_cast<std::uint8_t>(q);
-  s.crossings_left = mb[at(base, arc::kK)];
+  s.crossings = mb[at(base, arc::kK)];
   s.x = quadrant_sign_x(q) * std::int64_t{get24(mb, at(base, arc::kCx))};
   s.y = quadrant_sign_y(q) * std::int64_t{get24(mb, at(base, arc::kCy))};
   return s;

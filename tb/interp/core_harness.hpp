@@ -155,7 +155,7 @@ class CoreHarness : public tb::Harness<V> {
     s.d = (draw & (std::uint64_t{1} << (W + 1))) ? static_cast<std::int64_t>(draw) - (std::int64_t{1} << (W + 2))
                                                    : static_cast<std::int64_t>(draw);
     s.quadrant = top().o_arc ? top().o_q : 0;
-    s.crossings_left = top().o_arc ? top().o_k : 0;
+    s.crossings = top().o_arc ? top().o_k : 0;
     s.done = !top().o_busy;
     return s;
   }

@@ -72,10 +72,10 @@ module interp_formal #(
   wire [W+1:0] in_s = in_x_e ? axs : ays;
   wire [W+1:0] out_s = in_x_e ? ays : axs;
   wire same = (f_xs == f_xe) && (f_ys == f_ye);
-  wire [2:0] k0 = (fwd != 0) ? {1'b0, fwd} : ((!same && in_s >= in_e && out_s <= out_e) ? 3'd0 : 3'd4);
+  wire [2:0] k_start = (fwd != 0) ? {1'b0, fwd} : ((!same && in_s >= in_e && out_s <= out_e) ? 3'd0 : 3'd4);
   // Entry rule: in_e <= ceil(sqrt(R^2 - 1)), i.e. (in_e - 1)^2 < R^2 - 1.
   wire signed [2*W+5:0] in_e_m1 = $signed({1'b0, in_e}) - 1;
-  wire entry_ok = (k0 == 0) || (in_e == 0) || (in_e_m1 * in_e_m1 < r2 - 1);
+  wire entry_ok = (k_start == 0) || (in_e == 0) || (in_e_m1 * in_e_m1 < r2 - 1);
 
   // ------------------------------------------------------------- stimulus
   reg [1:0] f_t;  // 0: reset, 1: push, 2: run
@@ -130,7 +130,7 @@ module interp_formal #(
   assign blk[BLK_SXN] = (f_xe < 0);
   assign blk[BLK_SYN] = (f_ye < 0);
   assign blk[BLK_Q +: 2] = qs;
-  assign blk[BLK_K +: 3] = k0;
+  assign blk[BLK_K +: 3] = k_start;
   assign blk[BLK_XS +: W] = axs[W-1:0];
   assign blk[BLK_YS +: W] = ays[W-1:0];
   assign blk[BLK_XE +: W] = axe[W-1:0];
