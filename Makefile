@@ -7,6 +7,7 @@
 #   make synth   yosys + nextpnr-ice40: LCs and Fmax on HX8K and UP5K
 #   make lint    verilator --lint-only -Wall over rtl/ (every core's file list)
 #   make formal  the formal proofs and their mutants (ctest -L formal)
+#   make mutants planted bugs in model, RTL, 8085 program: each must be KILLED
 #   make deps    install what is missing (apt-get, npm ci); run by the above
 #   make clean   remove build/
 #
@@ -23,7 +24,7 @@ CTEST_ARGS ?=
 all: build
 
 help:
-	@sed -n '3,14p' Makefile
+	@sed -n '3,15p' Makefile
 
 deps:
 	@.ci/install-deps
@@ -68,6 +69,11 @@ lint: deps
 
 formal: configure
 	@cd $(BUILD) && ctest -L formal --output-on-failure $(CTEST_ARGS)
+
+# Mutation check of the suite (long; not part of `test`): tb/mutants/list.txt.
+.PHONY: mutants
+mutants: configure
+	@BUILD=$(BUILD) JOBS=$(JOBS) tb/mutants/run.sh
 
 clean:
 	rm -rf $(BUILD)
