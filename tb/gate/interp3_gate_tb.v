@@ -3,7 +3,7 @@
 // Icarus, the same inputs into both, every output bit compared on every
 // clock after the first reset (where the RTL bit is 0 or 1, the netlist's
 // must equal it; every register of interp3_core is reset, so no RTL X is
-// expected). tb/gate/gate_sim.sh builds and runs it.
+// expected: an X in the RTL fails too). tb/gate/gate_sim.sh builds and runs it.
 //
 // Plusargs:
 //   +mode=all     every move (|XE|, |YE|, |ZE| each 0..2^W - 1, the signs
@@ -76,8 +76,8 @@ module interp3_gate_tb;
       checked = checked + 1;
       if (r_sx === 1'b1 || r_sy === 1'b1 || r_sz === 1'b1) steps = steps + 1;
       if (^r_all === 1'bx) rtl_x = rtl_x + 1;
-      if (r_all !== g_all && differs(r_all, g_all)) begin
-        $display("FAIL interp3_gate_tb W = %0d: clock %0d: the netlist differs from the RTL", W, clock);
+      if ((r_all !== g_all && differs(r_all, g_all)) || ^r_all === 1'bx) begin
+        $display("FAIL interp3_gate_tb W = %0d: clock %0d: the netlist differs from the RTL (or an X in the RTL)", W, clock);
         $display("  inputs: rst %b load %b cmd %b xe %0d ye %0d ze %0d neg %b%b%b", rst, load, cmd, xe, ye, ze,
                  xneg, yneg, zneg);
         $display("  outputs   step xyz dir xyz done  x y z  exy exz eyz");
@@ -127,9 +127,16 @@ module interp3_gate_tb;
         step;
         load = 1'b0;
         moves_done = moves_done + 1;
+        r = 0;
         while (r_done !== 1'b1) begin
           cmd = ($random(seed) & 7) != 0;
           step;
+          r = r + 1;
+          if (r > 8 << W) begin  // 3 (2^W - 1) steps, the command 7 in 8
+            $display("FAIL interp3_gate_tb W = %0d: clock %0d: the RTL never ends the move |XE| %0d |YE| %0d |ZE| %0d",
+                     W, clock, xe, ye, ze);
+            $finish;
+          end
         end
       end
       repeat (4) step;

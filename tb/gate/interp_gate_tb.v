@@ -5,7 +5,9 @@
 // netlist's must be the same (an X or Z in the netlist is a difference);
 // where the RTL bit is X (registers of interp_dp that a load sets and a
 // reset leaves alone: o_pulse_y, o_xmag, ... before the first move) the
-// netlist may hold anything (the clocks are counted).
+// netlist may hold anything (the clocks are counted), but only until a
+// move is loaded: an X in the RTL after that fails (o_pulse_y and
+// o_pulse_neg count only with o_pulse).
 // tb/gate/gate_sim.sh builds and runs it.
 //
 // Plusargs:
@@ -56,6 +58,11 @@ module interp_gate_tb;
                                r_xmag, r_xneg, r_ymag, r_yneg, r_d, r_q, r_k, r_arc};
   wire [4*W+QAW+20:0] g_all = {g_full, g_level, g_pulse, g_pulse_y, g_pulse_neg, g_pulse_last, g_busy,
                                g_xmag, g_xneg, g_ymag, g_yneg, g_d, g_q, g_k, g_arc};
+
+  // For the X rule: o_pulse_y and o_pulse_neg qualified by o_pulse (X in
+  // the RTL until the first pulse after a reset; they mean nothing without it).
+  wire [4*W+QAW+20:0] r_qual = {r_full, r_level, r_pulse, r_pulse & r_pulse_y, r_pulse & r_pulse_neg,
+                                r_pulse_last, r_busy, r_xmag, r_xneg, r_ymag, r_yneg, r_d, r_q, r_k, r_arc};
 
   // ------------------------------------- the running move, for reports
   // A shadow of the queue: blocks in push order, the head taken when the
@@ -129,8 +136,8 @@ module interp_gate_tb;
       if (r_pulse === 1'b1) pulses = pulses + 1;
       if (r_pulse_last === 1'b1) moves_ended = moves_ended + 1;
       if (^r_all === 1'bx) rtl_x = rtl_x + 1;
-      if (r_all !== g_all && differs_all(r_all, g_all)) begin
-        $display("FAIL interp_gate_tb W = %0d: clock %0d: the netlist differs from the RTL", W, clock);
+      if ((r_all !== g_all && differs_all(r_all, g_all)) || (^r_qual === 1'bx && cur_idx != -1)) begin
+        $display("FAIL interp_gate_tb W = %0d: clock %0d: the netlist differs from the RTL (or an X in the RTL with a move loaded)", W, clock);
         $display("  inputs: rst %b abort %b cmd %b push %b blk %h", rst, abort, cmd, push, blk);
         field("o_full", r_full, g_full);
         field("o_level", r_level, g_level);
@@ -195,7 +202,11 @@ module interp_gate_tb;
     if (mode == "all") begin
       // Every block once, pushed as soon as the queue takes it.
       i = 0;
-      while (i < n_moves || r_level != 0 || r_busy) begin
+      while (i < n_moves || r_level !== 0 || r_busy !== 1'b0) begin
+        if (clock > 64 * n_moves + 1000) begin  // a move is at most 56 pulses at W = 3
+          $display("FAIL interp_gate_tb W = %0d: clock %0d: the RTL never drains its queue (block %0d)", W, clock, i);
+          $finish;
+        end
         cmd = ($random(seed) & 7) != 0;
         push = i < n_moves && !r_full;
         blk = i < n_moves ? moves[i] : {BB{1'b0}};
