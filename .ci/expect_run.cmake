@@ -4,6 +4,7 @@
 #   - with PATTERN: its stderr is one line matching PATTERN,
 #   - with OUT_PATTERN: its stdout matches OUT_PATTERN.
 # The top CMakeLists.txt names it CONTOUR_EXPECT_RUN for every folder.
+cmake_minimum_required(VERSION 3.25)
 if(NOT DEFINED COMMAND OR NOT DEFINED RC)
   message(FATAL_ERROR "expect_run: -DCOMMAND and -DRC are required")
 endif()

@@ -1,4 +1,5 @@
 # expect_flagged.cmake (cmake -DCOMMAND=<;-list> -DREPORT=<dir> -DCASES=<;-list>
+cmake_minimum_required(VERSION 3.25)
 #                       -DLOSSY=<;-list of engines> -DEXACT=<;-list of engines> -P):
 # runs a co-simulation that writes its report to REPORT and passes only if
 #   - it exits with status 0 (docs/cosim.md: FLAGGED rows count as passed),
