@@ -5,7 +5,10 @@
 #   fuzz_run.sh BIN SEEDS WORK [libFuzzer options...]
 #
 # ctest (gcode_fuzz_run) passes a fixed run count and seed, so the run is
-# repeatable: -runs=N -seed=S. Without options the run is time-boxed
+# bounded by work, not time: -runs=N -seed=S -reload=0 (the corpus is not
+# re-read on a timer): the same number of inputs from the same seed, on any
+# machine. Not bit-exact: the mutations follow coverage feedback, and two
+# runs differed by a few edges. Without options the run is time-boxed
 # instead, FUZZ_SECONDS (default 20), for fuzzing by hand, e.g.
 #   FUZZ_SECONDS=600 model/gcode/fuzz_run.sh build/model/gcode/gcode_fuzz model/gcode/corpus /tmp/fuzz
 set -euo pipefail
