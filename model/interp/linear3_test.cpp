@@ -156,6 +156,7 @@ TEST(Linear3, RejectsOutOfRangeEndPoints) {
   EXPECT_NO_THROW(Linear3<4>(15, -15, 15));
   try {
     Linear3<24>(0, 0, 1 << 24);
+    FAIL() << "no InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("ZE = 16777216"), std::string::npos) << e.what();
   }

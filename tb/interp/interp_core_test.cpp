@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <random>
 #include <vector>
@@ -220,6 +221,7 @@ TEST(InterpCoreW24, RandomArcsAndExtremes) {
   Coords coord(20260125);
   std::mt19937_64& rng = coord.rng;
   std::vector<Move> moves;
+  std::size_t small_arcs = 0, large_arcs = 0;
   // Small circles, whole.
   for (int i = 0; i < 120; ++i) {
     const std::int64_t xs = coord(600), ys = coord(600);
@@ -231,6 +233,7 @@ TEST(InterpCoreW24, RandomArcsAndExtremes) {
     try {
       validate<24>(m);
       moves.push_back(m);
+      ++small_arcs;
     } catch (const InputError&) {
     }
     if (i % 4 == 0) moves.push_back(Move::arc(xs, ys, xs, ys, s));
@@ -258,9 +261,14 @@ TEST(InterpCoreW24, RandomArcsAndExtremes) {
     try {
       validate<24>(m);
       moves.push_back(m);
+      ++large_arcs;
     } catch (const InputError&) {
     }
   }
+  // Each filtered sweep on its own (an all-rejected sweep must not pass).
+  std::printf("small arcs %zu, large arcs %zu\n", small_arcs, large_arcs);
+  EXPECT_GE(small_arcs, 100u);  // 120 with this seed
+  EXPECT_GE(large_arcs, 25u);  // 30 with this seed (half the starts lie outside R = M)
   EXPECT_GT(moves.size(), 150u);
   check_all(h, moves);
   // Full circles of the largest radii, cut after 100k pulses.

@@ -8,6 +8,7 @@
 // CONTOUR_FST=FILE: FST trace (use with --gtest_filter).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <memory>
 #include <sstream>
@@ -394,6 +395,26 @@ TEST(InterpTop, AbortInTheMiddleThenANewMove) {
   EXPECT_EQ(h.core_pulses, p0);
   EXPECT_EQ(status(h) & (INTERP_STATUS_BUSY_MASK | INTERP_STATUS_EMPTY_MASK), INTERP_STATUS_EMPTY_MASK);
   h.write(INTERP_REG_CTRL, 0);
+  // The aborted arc's pulses so far: the position registers agree with the
+  // pins, and the queued line(9, 9) was dropped.
+  const std::size_t n0 = h.pin_pulses().size();
+  ASSERT_GT(n0, 0u);
+  std::int64_t x0 = 0, y0 = 0;
+  for (const Pulse& p : h.pin_pulses()) (p.axis == Axis::X ? x0 : y0) += p.sign;
+  EXPECT_EQ(std::int32_t(h.read(INTERP_REG_POS_X)), x0);
+  EXPECT_EQ(std::int32_t(h.read(INTERP_REG_POS_Y)), y0);
+  // A new move after the abort runs whole, from where the abort left off.
+  const Move next = Move::line(7, -4);
+  h.push(next);
+  h.write(INTERP_REG_CTRL, 2 << INTERP_CTRL_SRC_LSB);
+  h.run_until_idle(200000);
+  h.write(INTERP_REG_CTRL, 0);
+  const auto all = h.pin_pulses();
+  const std::vector<Pulse> got(all.begin() + std::ptrdiff_t(std::min(n0, all.size())), all.end());
+  EXPECT_EQ(got, model_pulses({next}));
+  EXPECT_EQ(std::int32_t(h.read(INTERP_REG_POS_X)), x0 + 7);
+  EXPECT_EQ(std::int32_t(h.read(INTERP_REG_POS_Y)), y0 - 4);
+  EXPECT_EQ(status(h) & (INTERP_STATUS_BUSY_MASK | INTERP_STATUS_EMPTY_MASK), INTERP_STATUS_EMPTY_MASK);
   EXPECT_TRUE(h.errors.empty()) << h.error_text();
 }
 

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "harness.hpp"
 #include "interp/linear3.hpp"
@@ -22,7 +23,11 @@ class Interp3Harness : public tb::Harness<V> {
   using tb::Harness<V>::tick;
 
   // Constructed in reset: one reset clock with no load and no command.
-  explicit Interp3Harness(std::string fst_path = "") : tb::Harness<V>(std::move(fst_path)) { reset(); }
+  // `plusargs`: the model's run-time options, e.g. +verilator+rand+reset+2.
+  explicit Interp3Harness(std::string fst_path = "", const std::vector<std::string>& plusargs = {})
+      : tb::Harness<V>(std::move(fst_path), "TOP", plusargs) {
+    reset();
+  }
 
   void reset() {
     top().i_load = 0;
