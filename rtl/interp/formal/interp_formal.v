@@ -10,7 +10,15 @@
 //     every pulse is exactly one unit of motion on one axis;
 //   - when the move is done it is at its end point, and a line has taken
 //     exactly |XE| + |YE| pulses, an arc at most 8 R + 8;
-//   - the move is done within that many pulses (no runaway).
+//   - the move is done within that many pulses (no runaway);
+//   - the step rule: a reference of docs/algorithm.md's "One command
+//     pulse" (Linear, Circular), registers |x|, |y|, q, k, D, steps once
+//     per output pulse; each pulse (axis, sign) and the state shown with
+//     it equal the reference's, and there is a pulse exactly while the
+//     reference is not done (so the pulse count is the reference's).
+// With COVER defined the assertions give way to the covers (o_cov), one
+// per contract path (run_formal.sh covers). Flow and figures:
+// run_formal.sh, docs/rtl.md "Formal".
 `default_nettype none
 
 module interp_formal #(
