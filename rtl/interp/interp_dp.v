@@ -378,7 +378,9 @@ module interp_dp #(
         // Line: D = A*y - B*x, within [-B, A - 1] (or 0 when A = 0), and
         // the distance travelled never passes the end point.
         assert(k_q == 3'd0);
+`ifndef FORMAL_REF_ONLY
         assert(d_s == add_s * co_s - sub_s * ci_s);
+`endif
         assert(d_s >= -sub_s && (d_s < add_s || d_q == 0));
         assert({2'b00, ci_q} <= ti_f && {2'b00, co_q} <= to_f);
         assert(ti_f == {1'b0, add_q} && to_f == {1'b0, sub_q});
@@ -392,7 +394,9 @@ module interp_dp #(
         assert(add_q == {co_q, 1'b1});
         // |D| <= 2 (2^W - 1) (docs/algorithm.md, "Bounds"): W + 2 bits.
         assert(d_s <= 2 * MAXM_S && d_s >= -2 * MAXM_S);
+`ifndef FORMAL_REF_ONLY
         assert(d_s == ci_s * ci_s + co_s * co_s - r2_s);
+`endif
         if (k_q == 3'd0) begin
           assert({2'b00, ci_q} >= ti_f);
           assert({2'b00, co_q} <= to_f);
