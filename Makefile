@@ -69,8 +69,11 @@ synth: deps
 lint: deps
 	@$(MAKE) --no-print-directory -C rtl lint
 
+# The proofs of `make test` (ctest -L formal), then the long one: every
+# accepted arc at W = 3 to its full depth (about 10 min, docs/rtl.md).
 formal: configure
 	@cd $(BUILD) && ctest -L formal --no-tests=error --output-on-failure $(CTEST_ARGS)
+	@rtl/interp/formal/run_formal.sh $(BUILD)/formal/interp_arcs arcs:3:66
 
 # Mutation check of the suite (long; not part of `test`): tb/mutants/list.txt.
 .PHONY: mutants
