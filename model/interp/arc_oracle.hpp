@@ -195,4 +195,34 @@ inline std::string check_walk(const ArcExpect& a, std::int64_t xs, std::int64_t 
   return "";
 }
 
+// The sweep of the small-arc tests: every arc between lattice points with
+// |xs|, |ys| <= n and |xe|, |ye| <= n + 1, both senses, that the oracle
+// accepts, through `check` (xs, ys, xe, ye, cw -> "" or what is wrong);
+// `seen` (optional) is told of every arc and the oracle's acceptance.
+struct Sweep {
+  int runs = 0, failed = 0;
+  std::string first;  // the first three failures
+};
+
+struct NoSeen {
+  void operator()(int, int, int, int, bool, bool) const {}
+};
+
+template <class Check, class Seen = NoSeen>
+Sweep check_small_arcs(int n, Check&& check, Seen&& seen = {}) {
+  Sweep s;
+  for (int xs = -n; xs <= n; ++xs)
+    for (int ys = -n; ys <= n; ++ys)
+      for (int xe = -n - 1; xe <= n + 1; ++xe)
+        for (int ye = -n - 1; ye <= n + 1; ++ye)
+          for (bool cw : {false, true}) {
+            const bool accepted = expect_arc(xs, ys, xe, ye, cw).accepted;
+            seen(xs, ys, xe, ye, cw, accepted);
+            if (!accepted) continue;
+            ++s.runs;
+            if (std::string e = check(xs, ys, xe, ye, cw); !e.empty() && s.failed++ < 3) s.first += e + "\n";
+          }
+  return s;
+}
+
 }  // namespace contour::oracle

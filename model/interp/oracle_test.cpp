@@ -79,22 +79,17 @@ TEST(ArcOracle, ClosedFormOnKnownArcs) {
 // senses: the oracle's acceptance equals the model's, and every accepted
 // arc's walk is the oracle's.
 TEST(ArcOracle, EverySmallArcBothSenses) {
-  const int n = 7;
-  int runs = 0, failed = 0;
-  std::string first;
-  for (int xs = -n; xs <= n; ++xs)
-    for (int ys = -n; ys <= n; ++ys)
-      for (int xe = -n - 1; xe <= n + 1; ++xe)
-        for (int ye = -n - 1; ye <= n + 1; ++ye)
-          for (bool cw : {false, true}) {
-            const bool ok = oracle::expect_arc(xs, ys, xe, ye, cw).accepted;
-            ASSERT_EQ(model_accepts(xs, ys, xe, ye, cw), ok) << xs << " " << ys << " " << xe << " " << ye << " " << cw;
-            if (!ok) continue;
-            ++runs;
-            if (std::string e = check(xs, ys, xe, ye, cw); !e.empty() && failed++ < 3) first += e + "\n";
-          }
-  EXPECT_EQ(failed, 0) << first;
-  EXPECT_GT(runs, 5000);
+  int disagree = 0;
+  std::string first_disagreement;
+  auto same_acceptance = [&](int xs, int ys, int xe, int ye, bool cw, bool ok) {
+    if (model_accepts(xs, ys, xe, ye, cw) != ok && disagree++ == 0)
+      first_disagreement = std::to_string(xs) + " " + std::to_string(ys) + " " + std::to_string(xe) + " " +
+                           std::to_string(ye) + (cw ? " cw" : " ccw") + (ok ? ": the oracle accepts" : ": the model accepts");
+  };
+  const oracle::Sweep s = oracle::check_small_arcs(7, check, same_acceptance);
+  EXPECT_EQ(disagree, 0) << first_disagreement;
+  EXPECT_EQ(s.failed, 0) << s.first;
+  EXPECT_GT(s.runs, 5000);
 }
 
 // Random arcs of radius up to 2^12 at W = 16 and W = 24, the end a rounded

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "interp/arc_oracle.hpp"
+#include "interp/oracle_run.hpp"
 #include "sw8085/interp/host.hpp"
 
 namespace contour::sw8085 {
@@ -23,11 +24,7 @@ std::string check_arc(Host& h, std::int64_t xs, std::int64_t ys, std::int64_t xe
   } catch (const std::exception& e) {
     return name + "the run stopped: " + e.what();
   }
-  std::vector<oracle::Step> steps;
-  for (const StepRecord& s : r.steps)
-    steps.push_back({s.pulse.axis == Axis::X ? 0 : 1, s.pulse.sign, int(s.state.quadrant), s.state.x, s.state.y});
-  std::string e = oracle::check_walk(a, xs, ys, xe, ye, cw, steps);
-  if (e.empty() && !r.final_state.done) e = "not done at the end point";
+  const std::string e = oracle::check_run(a, xs, ys, xe, ye, cw, r);
   return e.empty() ? e : name + e;
 }
 
@@ -37,20 +34,9 @@ TEST(ProgramOracle, EverySmallArcBothSenses) {
   Host h;
   EXPECT_EQ(check_arc(h, 10, 0, 10, 2, false), "");
   EXPECT_EQ(check_arc(h, 10, 0, 10, -2, true), "");
-  const int n = 5;
-  int runs = 0, failed = 0;
-  std::string first;
-  for (int xs = -n; xs <= n; ++xs)
-    for (int ys = -n; ys <= n; ++ys)
-      for (int xe = -n - 1; xe <= n + 1; ++xe)
-        for (int ye = -n - 1; ye <= n + 1; ++ye)
-          for (bool cw : {false, true}) {
-            if (!oracle::expect_arc(xs, ys, xe, ye, cw).accepted) continue;
-            ++runs;
-            if (std::string e = check_arc(h, xs, ys, xe, ye, cw); !e.empty() && failed++ < 3) first += e + "\n";
-          }
-  EXPECT_EQ(failed, 0) << first;
-  EXPECT_GT(runs, 1500);
+  const oracle::Sweep s = oracle::check_small_arcs(5, [&](auto... a) { return check_arc(h, a...); });
+  EXPECT_EQ(s.failed, 0) << s.first;
+  EXPECT_GT(s.runs, 1500);
 }
 
 // Full circles of integer radius (8R pulses) and a large quarter across the

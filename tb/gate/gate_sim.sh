@@ -38,7 +38,7 @@ cells=$(dirname "$(command -v yosys)")/../share/yosys/ice40/cells_sim.v
 mkdir -p "$work"
 tag=${core}_w${w}_${mode}
 mapfile -t srcs < <("$rtl/filelist" "$list")
-incs=$("$rtl/filelist" --incdirs "$list" | sed 's/^/-I/' | tr '\n' ' ')
+incs="-I$here $("$rtl/filelist" --incdirs "$list" | sed 's/^/-I/' | tr '\n' ' ')"
 
 # 1. The netlist.
 netlist=${GATE_NETLIST:-$work/${core}_w${w}_gate.v}

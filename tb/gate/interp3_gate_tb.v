@@ -44,14 +44,7 @@ module interp3_gate_tb;
   wire [OB-1:0] r_all = {r_sx, r_sy, r_sz, r_dx, r_dy, r_dz, r_done, r_x, r_y, r_z, r_exy, r_exz, r_eyz};
   wire [OB-1:0] g_all = {g_sx, g_sy, g_sz, g_dx, g_dy, g_dz, g_done, g_x, g_y, g_z, g_exy, g_exz, g_eyz};
 
-  function differs(input [OB-1:0] r, input [OB-1:0] g);
-    integer b;
-    begin
-      differs = 1'b0;
-      for (b = 0; b < OB; b = b + 1)
-        if ((r[b] === 1'b0 || r[b] === 1'b1) && g[b] !== r[b]) differs = 1'b1;
-    end
-  endfunction
+`include "differs.vh"
 
   // The running move: the last one loaded.
   reg [W-1:0] m_xe = 0, m_ye = 0, m_ze = 0;
@@ -64,19 +57,14 @@ module interp3_gate_tb;
       m_neg <= {xneg, yneg, zneg};
     end
 
-  integer clock = 0, checked = 0, steps = 0, loads = 0, moves_done = 0, resets = 0, rtl_x = 0;
-  reg armed = 1'b0;
-  always #5 clk = ~clk;
-  always @(posedge clk) begin
-    clock <= clock + 1;
-    if (~rst) armed <= 1'b1;
-  end
+  integer checked = 0, steps = 0, loads = 0, moves_done = 0, resets = 0, rtl_x = 0;
+`include "clock.vh"
   always @(negedge clk) begin
     if (armed) begin
       checked = checked + 1;
       if (r_sx === 1'b1 || r_sy === 1'b1 || r_sz === 1'b1) steps = steps + 1;
       if (^r_all === 1'bx) rtl_x = rtl_x + 1;
-      if ((r_all !== g_all && differs(r_all, g_all)) || ^r_all === 1'bx) begin
+      if ((r_all !== g_all && differs_all(r_all, g_all)) || ^r_all === 1'bx) begin
         $display("FAIL interp3_gate_tb W = %0d: clock %0d: the netlist differs from the RTL (or an X in the RTL)", W, clock);
         $display("  inputs: rst %b load %b cmd %b xe %0d ye %0d ze %0d neg %b%b%b", rst, load, cmd, xe, ye, ze,
                  xneg, yneg, zneg);

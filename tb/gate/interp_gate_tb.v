@@ -112,24 +112,12 @@ module interp_gate_tb;
   endtask
 
   localparam integer OB = 4 * W + QAW + 21;  // output bits
-  function differs_all(input [OB-1:0] r, input [OB-1:0] g);
-    integer b;
-    begin
-      differs_all = 1'b0;
-      for (b = 0; b < OB; b = b + 1)
-        if ((r[b] === 1'b0 || r[b] === 1'b1) && g[b] !== r[b]) differs_all = 1'b1;
-    end
-  endfunction
+`include "differs.vh"
 
   // ------------------------------------------------------ the compare
-  integer clock = 0, checked = 0, pulses = 0, moves_ended = 0, pushes = 0, refused = 0;
+  integer checked = 0, pulses = 0, moves_ended = 0, pushes = 0, refused = 0;
   integer aborts = 0, resets = 0, rtl_x = 0;
-  reg armed = 1'b0;  // after the first reset
-  always #5 clk = ~clk;
-  always @(posedge clk) begin
-    clock <= clock + 1;
-    if (~rst) armed <= 1'b1;
-  end
+`include "clock.vh"
   always @(negedge clk) begin
     if (armed) begin
       checked = checked + 1;

@@ -11,6 +11,7 @@
 #include "Vinterp_w8.h"
 #include "core_harness.hpp"
 #include "interp/arc_oracle.hpp"
+#include "interp/oracle_run.hpp"
 
 namespace contour {
 namespace {
@@ -46,11 +47,7 @@ std::string check_arc(H& h, std::int64_t xs, std::int64_t ys, std::int64_t xe, s
     return name + "make_block gives q " + std::to_string(host.q) + " k " + std::to_string(host.k) + ", the oracle q " +
            std::to_string(a.q_start) + " k " + std::to_string(a.k);
   const RunResult r = h.run(oracle_block(a, xs, ys, xe, ye, cw), std::uint64_t(a.pulses) + 8);
-  std::vector<oracle::Step> steps;
-  for (const StepRecord& s : r.steps)
-    steps.push_back({s.pulse.axis == Axis::X ? 0 : 1, s.pulse.sign, int(s.state.quadrant), s.state.x, s.state.y});
-  std::string e = oracle::check_walk(a, xs, ys, xe, ye, cw, steps);
-  if (e.empty() && !r.final_state.done) e = "not done at the end point";
+  const std::string e = oracle::check_run(a, xs, ys, xe, ye, cw, r);
   return e.empty() ? e : name + e;
 }
 
@@ -58,20 +55,9 @@ std::string check_arc(H& h, std::int64_t xs, std::int64_t ys, std::int64_t xe, s
 // both senses, at W = 8.
 TEST(InterpCoreOracle, EverySmallArcBothSensesW8) {
   CoreHarness<Vinterp_w8, 8> h;
-  const int n = 8;
-  int runs = 0, failed = 0;
-  std::string first;
-  for (int xs = -n; xs <= n; ++xs)
-    for (int ys = -n; ys <= n; ++ys)
-      for (int xe = -n - 1; xe <= n + 1; ++xe)
-        for (int ye = -n - 1; ye <= n + 1; ++ye)
-          for (bool cw : {false, true}) {
-            if (!oracle::expect_arc(xs, ys, xe, ye, cw).accepted) continue;
-            ++runs;
-            if (std::string e = check_arc(h, xs, ys, xe, ye, cw); !e.empty() && failed++ < 3) first += e + "\n";
-          }
-  EXPECT_EQ(failed, 0) << first;
-  EXPECT_GT(runs, 8000);
+  const oracle::Sweep s = oracle::check_small_arcs(8, [&](auto... a) { return check_arc(h, a...); });
+  EXPECT_EQ(s.failed, 0) << s.first;
+  EXPECT_GT(s.runs, 8000);
 }
 
 // The arc, full circles of integer radius (8R pulses) and

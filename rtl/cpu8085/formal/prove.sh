@@ -45,15 +45,7 @@ aig() {
     prep -top cpu8085
     flatten
     delete -output cpu8085/o:*
-    memory_map
-    opt -fast
-    techmap
-    opt -fast
-    async2sync
-    dffunmap
-    setundef -undriven -anyseq
-    aigmap
-    opt_clean
+    script $src/../to_aiger.ys
     write_aiger -zinit -map $out/$1.map $out/$1.aig" > /dev/null 2>&1
 }
 

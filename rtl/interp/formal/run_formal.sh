@@ -55,15 +55,7 @@ aig() {
     prep -top interp_formal
     $extra
     flatten
-    memory_map
-    opt -fast
-    techmap
-    opt -fast
-    async2sync
-    dffunmap
-    setundef -undriven -anyseq
-    aigmap
-    opt_clean
+    script $core/../to_aiger.ys
     write_aiger -zinit -map $out/$1.map $out/$1.aig" > /dev/null 2>&1
 }
 
