@@ -8,6 +8,7 @@
 #   make lint    verilator --lint-only -Wall over rtl/ (every core's file list)
 #   make formal  the formal proofs and their mutants (ctest -L formal)
 #   make mutants planted bugs in model, RTL, 8085 program: each must be KILLED
+#   make coverage line and toggle coverage of the interp_core regression
 #   make deps    install what is missing (apt-get, npm ci); run by the above
 #   make clean   remove build/
 #
@@ -18,13 +19,14 @@ BUILD   ?= build
 JOBS    ?= 2
 CMAKE   ?= cmake
 CTEST_ARGS ?=
+COV_FILTER ?= *
 
 .PHONY: all deps configure build run test bench synth lint formal clean help
 
 all: build
 
 help:
-	@sed -n '3,15p' Makefile
+	@sed -n '3,16p' Makefile
 
 deps:
 	@.ci/install-deps
@@ -82,3 +84,10 @@ mutants: configure
 
 clean:
 	rm -rf $(BUILD)
+
+# Line and toggle coverage of the interp_core regression (long, ~2.5 min;
+# not part of `test`): tb/interp/coverage.sh, results in $(BUILD)/coverage.
+.PHONY: coverage
+coverage: configure
+	@$(CMAKE) --build $(BUILD) -j$(JOBS) --target interp_rtl_cov
+	@tb/interp/coverage.sh $(BUILD) '$(COV_FILTER)'

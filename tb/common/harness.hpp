@@ -9,6 +9,12 @@
 // harnesses in one run, the last one's waveform is what the file holds).
 // One clock is two trace samples, so the FST's time is half-clocks.
 //
+// Coverage (models Verilated with --coverage-line/--coverage-toggle, where
+// Verilator defines VM_COVERAGE): with CONTOUR_COVERAGE=FILE each harness
+// writes its context's counts at destruction to FILE.N (N = 0, 1, ... in
+// the order the harnesses end; one process: `make coverage` merges them
+// with verilator_coverage). Without VM_COVERAGE the variable is ignored.
+//
 // A harness that serves a bus between the two edges (the 8085 machines)
 // calls clock_low() and clock_high() itself; others call tick(). A
 // derived harness that samples outputs every clock overrides after_clock().
@@ -16,6 +22,11 @@
 
 #include <verilated.h>
 #include <verilated_fst_c.h>
+#if VM_COVERAGE
+#include <verilated_cov.h>
+
+#include <atomic>
+#endif
 
 #include <cstdint>
 #include <cstdlib>
@@ -32,6 +43,17 @@ inline std::string fst_request(std::string path) {
   }
   return path;
 }
+
+#if VM_COVERAGE
+// The next coverage file of this process: $CONTOUR_COVERAGE.N, or "" if the
+// variable is unset.
+inline std::string coverage_request() {
+  static std::atomic<unsigned> next{0};
+  const char* env = std::getenv("CONTOUR_COVERAGE");
+  if (env == nullptr || *env == '\0') return {};
+  return std::string(env) + "." + std::to_string(next++);
+}
+#endif
 
 template <class V>
 class Harness {
@@ -59,6 +81,11 @@ class Harness {
   virtual ~Harness() {
     close_trace();
     top_->final();
+#if VM_COVERAGE
+    if (const std::string cov = coverage_request(); !cov.empty()) {
+      ctx_->coveragep()->write(cov.c_str());
+    }
+#endif
   }
   Harness(const Harness&) = delete;
   Harness& operator=(const Harness&) = delete;
