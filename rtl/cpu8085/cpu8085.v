@@ -714,8 +714,13 @@ module cpu8085 (
       // RST x.5 acknowledge 12, an idle unit 1.
       if (unit_end && unit_t1) assert (f_t_q == 5'd0);
       if (unit_end && !unit_t1) begin
-        if (kind_q == K_IACK) assert (f_t_q + 5'd1 == 5'd12);
-        else assert (f_t_q + 5'd1 == f_t_expect);
+        // begin/end: `assert (...); else` would bind the else to the
+        // assert (its fail action) in SystemVerilog.
+        if (kind_q == K_IACK) begin
+          assert (f_t_q + 5'd1 == 5'd12);
+        end else begin
+          assert (f_t_q + 5'd1 == f_t_expect);
+        end
       end
     end
   end

@@ -63,13 +63,20 @@ module interp_top #(
       .i_clk(i_clk), .i_rst(i_rst), .i_src(src), .i_pin(i_cmd_pin), .i_inc(feed), .o_cmd(cmd_raw)
   );
 
-  // Core state outputs not needed at the top are left unconnected
-  // (waiver in rtl/verilator.vlt).
+  // The core's state outputs are for test benches; the peripheral reports
+  // positions from its own counters. They go to unused_* wires (the
+  // linter expects those names to be unused).
+  wire [W-1:0] unused_xmag, unused_ymag;
+  wire [W+1:0] unused_d;
+  wire [1:0] unused_q;
+  wire [2:0] unused_k;
+  wire unused_xneg, unused_yneg, unused_arc;
   interp_core #(.W(W), .QAW(QAW)) u_core (
       .i_clk(i_clk), .i_rst(i_rst), .i_abort(abort), .i_cmd(cmd_core),
       .i_push(push), .i_blk(blk), .o_full(full), .o_level(level),
       .o_pulse(pulse), .o_pulse_y(pulse_y), .o_pulse_neg(pulse_neg), .o_pulse_last(pulse_last),
-      .o_busy(busy), .o_xmag(), .o_xneg(), .o_ymag(), .o_yneg(), .o_d(), .o_q(), .o_k(), .o_arc()
+      .o_busy(busy), .o_xmag(unused_xmag), .o_xneg(unused_xneg), .o_ymag(unused_ymag),
+      .o_yneg(unused_yneg), .o_d(unused_d), .o_q(unused_q), .o_k(unused_k), .o_arc(unused_arc)
   );
 
   step_out #(.TW(16)) u_out (

@@ -340,8 +340,13 @@ module interp_formal #(
       assert($signed(d) == r_d_now);
       assert(busy == !r_done_now);
       assert(nn == r_n_now);
-      if (f_arc) assert(q == r_q_now && k == r_k_now);
-      else assert(xneg == f_sxn && yneg == f_syn);
+      // (begin/end: `assert (...); else` would make the else the first
+      // assert's fail action in SystemVerilog, as Verilator reads it.)
+      if (f_arc) begin
+        assert(q == r_q_now && k == r_k_now);
+      end else begin
+        assert(xneg == f_sxn && yneg == f_syn);
+      end
     end
   end
 `else
