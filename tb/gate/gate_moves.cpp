@@ -6,18 +6,21 @@
 //                                   every line, every arc (both senses)
 //   gate_moves random 24 N SEED FILE  N accepted moves at W = 24, seeded
 //
-// The host's rule decides acceptance (Circular<W>::validate, which also
-// gives the start quadrant q and the crossings k). The W = 24 moves are
+// The host's rule decides acceptance and gives the block (rtl::make_block
+// of tb/interp/block.hpp: the start quadrant q and the crossings k from
+// Circular<W>::validate, the layout of interp_block.vh). The W = 24 moves are
 // kept short in pulses but not in bits: lines of at most 64 pulses, lines
 // with one full-width coordinate (the testbench aborts them), arcs of a
 // small radius, and arcs of a full-width radius that end a few pulses
 // after their start (the end found by stepping the golden model).
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <random>
 #include <string>
 
+#include "block.hpp"
 #include "interp/circular.hpp"
 #include "interp/types.hpp"
 
@@ -25,58 +28,42 @@ using namespace contour;
 
 namespace {
 
-struct Word {
-  std::uint64_t lo = 0, hi = 0;  // up to 128 bits
-  void put(unsigned lsb, unsigned width, std::uint64_t v) {
-    for (unsigned i = 0; i < width; ++i) {
-      if (!((v >> i) & 1u)) continue;
-      const unsigned b = lsb + i;
-      if (b < 64) lo |= std::uint64_t{1} << b;
-      else hi |= std::uint64_t{1} << (b - 64);
-    }
-  }
-};
+// A block word of up to 128 bits, 32-bit words least significant first
+// (as Verilator's wide ports, so pack_block writes it the same way).
+using Word = std::array<std::uint32_t, 4>;
 
-// The word in exactly ceil((9 + 4 W) / 4) hexadecimal digits.
+// The word in exactly ceil(blk::bits(W) / 4) hexadecimal digits.
 void emit(FILE* f, unsigned w, const Word& b) {
   char buf[40];
-  std::snprintf(buf, sizeof buf, "%016llx%016llx", (unsigned long long)b.hi, (unsigned long long)b.lo);
-  const unsigned digits = (9 + 4 * w + 3) / 4;
+  std::snprintf(buf, sizeof buf, "%08x%08x%08x%08x", b[3], b[2], b[1], b[0]);
+  const unsigned digits = (rtl::blk::bits(w) + 3) / 4;
   std::fprintf(f, "%s\n", buf + 32 - digits);
 }
 
-std::uint64_t mag(std::int64_t v) { return static_cast<std::uint64_t>(v < 0 ? -v : v); }
+// The move's block as the host makes it (rtl::make_block: the host's
+// validation gives q and k); false when the host refuses the move.
+template <unsigned W>
+bool write_move(FILE* f, const Move& m) {
+  rtl::Block blk;
+  try {
+    blk = rtl::make_block<W>(m);
+  } catch (const InputError&) {
+    return false;
+  }
+  Word word{};
+  rtl::pack_block(word, W, blk);
+  emit(f, W, word);
+  return true;
+}
 
-// BLK_* of interp_block.vh: ARC 0, CW 1, SXN 2, SYN 3, Q 4 (2), K 6 (3),
-// then XS, YS, XE, YE, W bits each from bit 9.
-void write_line(FILE* f, unsigned w, std::int64_t xe, std::int64_t ye) {
-  Word b;
-  b.put(2, 1, xe < 0);
-  b.put(3, 1, ye < 0);
-  b.put(9 + 2 * w, w, mag(xe));
-  b.put(9 + 3 * w, w, mag(ye));
-  emit(f, w, b);
+template <unsigned W>
+void write_line(FILE* f, std::int64_t xe, std::int64_t ye) {
+  write_move<W>(f, Move::line(xe, ye));
 }
 
 template <unsigned W>
 bool write_arc(FILE* f, std::int64_t xs, std::int64_t ys, std::int64_t xe, std::int64_t ye, Sense s) {
-  typename Circular<W>::Plan p;
-  try {
-    p = Circular<W>::validate(xs, ys, xe, ye, s);
-  } catch (const InputError&) {
-    return false;
-  }
-  Word b;
-  b.put(0, 1, 1);
-  b.put(1, 1, s == Sense::CW);
-  b.put(4, 2, static_cast<std::uint64_t>(p.q_start));
-  b.put(6, 3, static_cast<std::uint64_t>(p.crossings));
-  b.put(9, W, mag(xs));
-  b.put(9 + W, W, mag(ys));
-  b.put(9 + 2 * W, W, mag(xe));
-  b.put(9 + 3 * W, W, mag(ye));
-  emit(f, W, b);
-  return true;
+  return write_move<W>(f, Move::arc(xs, ys, xe, ye, s));
 }
 
 int all3(FILE* f) {
@@ -84,7 +71,7 @@ int all3(FILE* f) {
   constexpr std::int64_t m = (1 << W) - 1;
   int lines = 0, arcs = 0;
   for (std::int64_t xe = -m; xe <= m; ++xe)
-    for (std::int64_t ye = -m; ye <= m; ++ye) write_line(f, W, xe, ye), ++lines;
+    for (std::int64_t ye = -m; ye <= m; ++ye) write_line<W>(f, xe, ye), ++lines;
   for (std::int64_t xs = -m; xs <= m; ++xs)
     for (std::int64_t ys = -m; ys <= m; ++ys)
       for (std::int64_t xe = -m; xe <= m; ++xe)
@@ -109,11 +96,11 @@ int random24(FILE* f, int n, unsigned seed) {
     const int kind = kKind[uni(0, 9)];
     if (kind == 0) {  // a short line
       const std::int64_t a = uni(0, 40), b = uni(0, 64 - a);
-      write_line(f, W, sgn() * a, sgn() * b);
+      write_line<W>(f, sgn() * a, sgn() * b);
     } else if (kind == 1) {  // a full-width line, aborted by the testbench
       const std::int64_t a = uni(m / 2, m), b = uni(0, m);
-      if (uni(0, 1)) write_line(f, W, sgn() * a, sgn() * b);
-      else write_line(f, W, sgn() * b, sgn() * a);
+      if (uni(0, 1)) write_line<W>(f, sgn() * a, sgn() * b);
+      else write_line<W>(f, sgn() * b, sgn() * a);
     } else {
       const Sense s = uni(0, 1) ? Sense::CW : Sense::CCW;
       std::int64_t xs, ys;
