@@ -12,7 +12,8 @@
 # rebuild only its test binaries, run them (gtest, stopping at the first
 # failure), report KILLED (and the test that failed) or SURVIVED, restore
 # the file. Exit status 1 if any mutant survived or did not apply (its
-# expression changed nothing), 2 if the unmutated suite fails.
+# expression changed nothing), 2 if the unmutated suite fails or a NAME is
+# not in the list.
 set -uo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 list="$root/tb/mutants/list.txt"
@@ -54,6 +55,12 @@ run_tests() {  # run_tests BINARY... -> 0 all passed; else prints the first fail
 mutants() {  # the list's lines: name|file|sed|binaries, trimmed
   sed -e '/^#/d' -e '/^[[:space:]]*$/d' "$list" | sed -e 's/[[:space:]]*|[[:space:]]*/|/g'
 }
+
+# A name given that the list does not have is an error, not an empty run.
+for n in $only; do
+  mutants | cut -d'|' -f1 | grep -qx "$n" ||
+    { echo "tb/mutants/run.sh: no mutant '$n' in tb/mutants/list.txt ($(mutants | cut -d'|' -f1 | tr '\n' ' '))" >&2; exit 2; }
+done
 
 copy_tree
 cmake -S "$work/src" -B "$work/build" -DCMAKE_BUILD_TYPE=Release > "$work/configure.log" 2>&1 || { echo "configure failed: $work/configure.log"; exit 2; }
