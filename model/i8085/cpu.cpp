@@ -1,6 +1,7 @@
 #include "i8085/cpu.hpp"
 
 #include <stdexcept>
+#include <utility>
 
 namespace i8085 {
 
@@ -25,17 +26,25 @@ constexpr std::array<std::uint8_t, 256> kSzp = make_szp();
 
 std::uint8_t szp(unsigned v) { return kSzp[v & 0xFF]; }
 
+// Flags S Z AC P of INR and DCR by result (CY and the fixed bits apart).
+// INR: AC = the low nibble of the result is 0. DCR adds 0xFF: AC is the
+// carry out of bit 3, i.e. set unless the low nibble wrapped from 0 to F.
+constexpr std::array<std::uint8_t, 256> make_incdec(bool dec) {
+  std::array<std::uint8_t, 256> t{};
+  for (int r = 0; r < 256; ++r) {
+    const bool ac = dec ? (r & 0x0F) != 0x0F : (r & 0x0F) == 0;
+    t[static_cast<std::size_t>(r)] = static_cast<std::uint8_t>(kSzp[static_cast<std::size_t>(r)] | (ac ? flag::AC : 0));
+  }
+  return t;
+}
+constexpr std::array<std::uint8_t, 256> kInr = make_incdec(false);
+constexpr std::array<std::uint8_t, 256> kDcr = make_incdec(true);
 
-// Opcode fields: x = bits 7-6, y = bits 5-3, z = bits 2-0; rp = bits 5-4,
-// a register pair (0 BC, 1 DE, 2 HL, 3 SP or PSW).
-constexpr int op_x(std::uint8_t op) { return op >> 6; }
-constexpr int op_y(std::uint8_t op) { return (op >> 3) & 7; }
-constexpr int op_z(std::uint8_t op) { return op & 7; }
-constexpr int op_rp(std::uint8_t op) { return (op >> 4) & 3; }
+constexpr bool is85(Mode m) { return m == Mode::i8085; }
 
 }  // namespace
 
-Cpu::Cpu(Bus& bus, Mode mode) : bus_(bus), mode_(mode) { reset(); }
+Cpu::Cpu(Bus& bus, Mode mode) : bus_(bus), mem_(bus.memory()), mode_(mode) { reset(); }
 
 void Cpu::reset() {
   regs = Regs{};
@@ -52,31 +61,47 @@ void Cpu::reset() {
   ie_before_trap_ = false;
   last_ = Step{};
   last_.mode = mode_;
+  update_attention();
 }
 
 void Cpu::set_trap(bool level) {
   if (level && mode_ == Mode::i8080) throw std::logic_error("the 8080 has no TRAP input");
   if (level && !trap_level_) trap_latch_ = true;
   trap_level_ = level;
+  update_attention();
 }
 
 void Cpu::set_rst75(bool level) {
   if (level && mode_ == Mode::i8080) throw std::logic_error("the 8080 has no RST 7.5 input");
   if (level && !rst75_level_) rst75_latch_ = true;
   rst75_level_ = level;
+  update_attention();
 }
 
 void Cpu::set_rst65(bool level) {
   if (level && mode_ == Mode::i8080) throw std::logic_error("the 8080 has no RST 6.5 input");
   rst65_level_ = level;
+  update_attention();
 }
 
 void Cpu::set_rst55(bool level) {
   if (level && mode_ == Mode::i8080) throw std::logic_error("the 8080 has no RST 5.5 input");
   rst55_level_ = level;
+  update_attention();
 }
 
-void Cpu::set_intr(bool level) { intr_level_ = level; }
+void Cpu::set_intr(bool level) {
+  intr_level_ = level;
+  update_attention();
+}
+
+// Conservative: true whenever pending() might not be `none`, or the step
+// is not a plain instruction (halted, EI delay).
+void Cpu::update_attention() {
+  const bool maskable = ie_ && (intr_level_ || (rst75_latch_ && !(masks_ & 0x04)) ||
+                                (rst65_level_ && !(masks_ & 0x02)) || (rst55_level_ && !(masks_ & 0x01)));
+  attention_ = halted_ || ei_delay_ || trap_latch_ || maskable;
+}
 
 std::uint8_t Cpu::rim_value() const {
   const bool ie = rim_after_trap_ ? ie_before_trap_ : ie_;
@@ -84,159 +109,157 @@ std::uint8_t Cpu::rim_value() const {
                                    (rst65_level_ ? 0x20 : 0) | (rst75_latch_ ? 0x40 : 0));
 }
 
-std::uint8_t Cpu::fetch8() {
+// ---- Memory, operands, stack, registers -----------------------------------
+
+template <bool D>
+[[gnu::always_inline]] inline void Cpu::wr(std::uint16_t a, std::uint8_t v) {
+  if constexpr (D)
+    mem_[a] = v;
+  else
+    bus_.write(a, v);
+}
+
+// An operand byte at PC (from bus.inta() during an INTR acknowledge, which
+// only the slow path, D = false, runs), recorded in last().
+template <bool D>
+[[gnu::always_inline]] inline std::uint8_t Cpu::imm8() {
   std::uint8_t v;
+  if constexpr (D) {  // the fast path: the opcode is the only byte so far
+    v = mem_[regs.pc];
+    regs.pc = static_cast<std::uint16_t>(regs.pc + 1);
+    last_.bytes[1] = v;
+    last_.length = 2;
+    return v;
+  }
   if (from_inta_) {
     v = bus_.inta();
   } else {
-    v = read(regs.pc);
+    v = bus_.read(regs.pc);
     regs.pc = static_cast<std::uint16_t>(regs.pc + 1);
   }
   if (last_.length < 3) last_.bytes[last_.length++] = v;
   return v;
 }
 
-std::uint16_t Cpu::fetch16() {
-  const std::uint8_t lo = fetch8();
-  const std::uint8_t hi = fetch8();
+template <bool D>
+[[gnu::always_inline]] inline std::uint16_t Cpu::imm16() {
+  if constexpr (D) {  // the fast path: two bytes at PC, recorded at once
+    const std::uint16_t pc = regs.pc;
+    const std::uint8_t lo = mem_[pc], hi = mem_[static_cast<std::uint16_t>(pc + 1)];
+    regs.pc = static_cast<std::uint16_t>(pc + 2);
+    last_.bytes[1] = lo;
+    last_.bytes[2] = hi;
+    last_.length = 3;
+    return static_cast<std::uint16_t>(hi << 8 | lo);
+  }
+  const std::uint8_t lo = imm8<D>();
+  const std::uint8_t hi = imm8<D>();
   return static_cast<std::uint16_t>(hi << 8 | lo);
 }
 
-void Cpu::push(std::uint16_t v) {
+template <bool D>
+[[gnu::always_inline]] inline void Cpu::push(std::uint16_t v) {
   regs.sp = static_cast<std::uint16_t>(regs.sp - 1);
-  write(regs.sp, static_cast<std::uint8_t>(v >> 8));
+  wr<D>(regs.sp, static_cast<std::uint8_t>(v >> 8));
   regs.sp = static_cast<std::uint16_t>(regs.sp - 1);
-  write(regs.sp, static_cast<std::uint8_t>(v & 0xFF));
+  wr<D>(regs.sp, static_cast<std::uint8_t>(v & 0xFF));
 }
 
-std::uint16_t Cpu::pop() {
-  const std::uint8_t lo = read(regs.sp);
-  regs.sp = static_cast<std::uint16_t>(regs.sp + 1);
-  const std::uint8_t hi = read(regs.sp);
-  regs.sp = static_cast<std::uint16_t>(regs.sp + 1);
+template <bool D>
+[[gnu::always_inline]] inline std::uint16_t Cpu::pop() {
+  const std::uint8_t lo = rd<D>(regs.sp);
+  const std::uint8_t hi = rd<D>(static_cast<std::uint16_t>(regs.sp + 1));
+  regs.sp = static_cast<std::uint16_t>(regs.sp + 2);
   return static_cast<std::uint16_t>(hi << 8 | lo);
 }
 
-std::uint8_t Cpu::get_reg(int r) {
-  switch (r) {
-    case 0: return regs.b;
-    case 1: return regs.c;
-    case 2: return regs.d;
-    case 3: return regs.e;
-    case 4: return regs.h;
-    case 5: return regs.l;
-    case 6: return read(regs.hl());
-    default: return regs.a;
-  }
+// Register R of an opcode field: 0 B, 1 C, 2 D, 3 E, 4 H, 5 L, 6 M, 7 A.
+template <bool D, int R>
+std::uint8_t Cpu::get_r() {
+  if constexpr (R == 0) return regs.b;
+  else if constexpr (R == 1) return regs.c;
+  else if constexpr (R == 2) return regs.d;
+  else if constexpr (R == 3) return regs.e;
+  else if constexpr (R == 4) return regs.h;
+  else if constexpr (R == 5) return regs.l;
+  else if constexpr (R == 6) return rd<D>(regs.hl());
+  else return regs.a;
 }
 
-void Cpu::set_reg(int r, std::uint8_t v) {
-  switch (r) {
-    case 0: regs.b = v; break;
-    case 1: regs.c = v; break;
-    case 2: regs.d = v; break;
-    case 3: regs.e = v; break;
-    case 4: regs.h = v; break;
-    case 5: regs.l = v; break;
-    case 6: write(regs.hl(), v); break;
-    default: regs.a = v; break;
-  }
+template <bool D, int R>
+void Cpu::set_r(std::uint8_t v) {
+  if constexpr (R == 0) regs.b = v;
+  else if constexpr (R == 1) regs.c = v;
+  else if constexpr (R == 2) regs.d = v;
+  else if constexpr (R == 3) regs.e = v;
+  else if constexpr (R == 4) regs.h = v;
+  else if constexpr (R == 5) regs.l = v;
+  else if constexpr (R == 6) wr<D>(regs.hl(), v);
+  else regs.a = v;
 }
 
-std::uint16_t Cpu::get_rp(int rp) const {
-  switch (rp) {
-    case 0: return regs.bc();
-    case 1: return regs.de();
-    case 2: return regs.hl();
-    default: return regs.sp;
-  }
+// Register pair RP: 0 BC, 1 DE, 2 HL, 3 SP.
+template <int RP>
+std::uint16_t Cpu::get_rp() const {
+  if constexpr (RP == 0) return regs.bc();
+  else if constexpr (RP == 1) return regs.de();
+  else if constexpr (RP == 2) return regs.hl();
+  else return regs.sp;
 }
 
-void Cpu::set_rp(int rp, std::uint16_t v) {
+template <int RP>
+void Cpu::set_rp(std::uint16_t v) {
   const auto hi = static_cast<std::uint8_t>(v >> 8);
   const auto lo = static_cast<std::uint8_t>(v & 0xFF);
-  switch (rp) {
-    case 0: regs.b = hi; regs.c = lo; break;
-    case 1: regs.d = hi; regs.e = lo; break;
-    case 2: regs.h = hi; regs.l = lo; break;
-    default: regs.sp = v; break;
-  }
+  if constexpr (RP == 0) { regs.b = hi; regs.c = lo; }
+  else if constexpr (RP == 1) { regs.d = hi; regs.e = lo; }
+  else if constexpr (RP == 2) { regs.h = hi; regs.l = lo; }
+  else regs.sp = v;
 }
 
-bool Cpu::condition(int cc) const {
-  switch (cc) {
-    case 0: return !(regs.f & flag::Z);
-    case 1: return (regs.f & flag::Z) != 0;
-    case 2: return !(regs.f & flag::CY);
-    case 3: return (regs.f & flag::CY) != 0;
-    case 4: return !(regs.f & flag::P);
-    case 5: return (regs.f & flag::P) != 0;
-    case 6: return !(regs.f & flag::S);
-    default: return (regs.f & flag::S) != 0;
-  }
+// Condition CC: NZ Z NC C PO PE P M.
+template <int CC>
+bool Cpu::condition() const {
+  constexpr std::uint8_t bit = CC < 2 ? flag::Z : CC < 4 ? flag::CY : CC < 6 ? flag::P : flag::S;
+  return ((regs.f & bit) != 0) == ((CC & 1) != 0);
 }
 
-// ADD ADC SUB SBB ANA XRA ORA CMP. Subtraction is the addition of the
-// one's complement with carry-in = NOT borrow, as the 8080/8085 ALU does it:
-// AC is the carry out of bit 3 of that addition, CY the inverted carry out
-// of bit 7 (a borrow).
-void Cpu::alu(int op, std::uint8_t v) {
+// ---- Arithmetic -------------------------------------------------------------
+
+// ADD ADC SUB SBB ANA XRA ORA CMP (OP = 0..7). Subtraction is the addition
+// of the one's complement with carry-in = NOT borrow, as the 8080/8085 ALU
+// does it: AC is the carry out of bit 3 of that addition, CY the inverted
+// carry out of bit 7 (a borrow).
+template <Mode M, int OP>
+void Cpu::alu(std::uint8_t v) {
   const unsigned a = regs.a;
-  const std::uint8_t fixed = fixed_flags(mode_);
-  const bool cy = (regs.f & flag::CY) != 0;
-  unsigned r = 0;
-  std::uint8_t f = 0;
-  switch (op) {
-    case 0:  // ADD
-    case 1: {  // ADC
-      const unsigned cin = (op == 1 && cy) ? 1u : 0u;
-      r = a + v + cin;
-      f = static_cast<std::uint8_t>(szp(r) | ((r >> 8) & 1u ? flag::CY : 0) | ((a ^ v ^ r) & 0x10u));
-      break;
-    }
-    case 2:  // SUB
-    case 3:  // SBB
-    case 7: {  // CMP
-      const unsigned cin = (op == 3 && cy) ? 0u : 1u;
-      const unsigned nv = static_cast<std::uint8_t>(~v);
-      r = a + nv + cin;
-      f = static_cast<std::uint8_t>(szp(r) | ((r >> 8) & 1u ? 0 : flag::CY) | ((a ^ nv ^ r) & 0x10u));
-      break;
-    }
-    case 4:  // ANA: the 8085 sets AC; the 8080 sets it to bit 3 of (A | v).
-      r = a & v;
-      f = szp(r);
-      if (mode_ == Mode::i8085 || ((a | v) & 0x08)) f |= flag::AC;
-      break;
-    case 5:  // XRA
-      r = a ^ v;
-      f = szp(r);
-      break;
-    default:  // ORA
-      r = a | v;
-      f = szp(r);
-      break;
+  unsigned r;
+  std::uint8_t f;
+  if constexpr (OP <= 1) {  // ADD ADC
+    const unsigned cin = OP == 1 ? (regs.f & flag::CY) : 0u;
+    r = a + v + cin;
+    f = static_cast<std::uint8_t>(szp(r) | ((r >> 8) & 1u) | ((a ^ v ^ r) & 0x10u));
+  } else if constexpr (OP == 2 || OP == 3 || OP == 7) {  // SUB SBB CMP
+    const unsigned cin = OP == 3 ? ((regs.f & flag::CY) ^ 1u) : 1u;
+    const unsigned nv = static_cast<std::uint8_t>(~v);
+    r = a + nv + cin;
+    f = static_cast<std::uint8_t>(szp(r) | (((r >> 8) & 1u) ^ 1u) | ((a ^ nv ^ r) & 0x10u));
+  } else if constexpr (OP == 4) {  // ANA: the 8085 sets AC; the 8080 sets it to bit 3 of (A | v).
+    r = a & v;
+    f = szp(r);
+    if (is85(M) || ((a | v) & 0x08)) f |= flag::AC;
+  } else if constexpr (OP == 5) {  // XRA
+    r = a ^ v;
+    f = szp(r);
+  } else {  // ORA
+    r = a | v;
+    f = szp(r);
   }
-  regs.f = static_cast<std::uint8_t>(f | fixed);
-  if (op != 7) regs.a = static_cast<std::uint8_t>(r);
+  regs.f = static_cast<std::uint8_t>(f | fixed_flags(M));
+  if constexpr (OP != 7) regs.a = static_cast<std::uint8_t>(r);
 }
 
-std::uint8_t Cpu::inr(std::uint8_t v) {
-  const auto r = static_cast<std::uint8_t>(v + 1);
-  regs.f = static_cast<std::uint8_t>((regs.f & flag::CY) | szp(r) | ((r & 0x0F) == 0 ? flag::AC : 0) |
-                                     fixed_flags(mode_));
-  return r;
-}
-
-// DCR adds 0xFF: AC is the carry out of bit 3, i.e. set unless the low
-// nibble wrapped from 0 to F.
-std::uint8_t Cpu::dcr(std::uint8_t v) {
-  const auto r = static_cast<std::uint8_t>(v - 1);
-  regs.f = static_cast<std::uint8_t>((regs.f & flag::CY) | szp(r) | ((r & 0x0F) != 0x0F ? flag::AC : 0) |
-                                     fixed_flags(mode_));
-  return r;
-}
-
+template <Mode M>
 void Cpu::daa() {
   const unsigned a = regs.a;
   unsigned corr = 0;
@@ -248,8 +271,7 @@ void Cpu::daa() {
     cy = true;
   }
   const unsigned r = a + corr;
-  regs.f = static_cast<std::uint8_t>(szp(r) | (cy ? flag::CY : 0) | ((a ^ corr ^ r) & 0x10u) |
-                                     fixed_flags(mode_));
+  regs.f = static_cast<std::uint8_t>(szp(r) | (cy ? flag::CY : 0) | ((a ^ corr ^ r) & 0x10u) | fixed_flags(M));
   regs.a = static_cast<std::uint8_t>(r);
 }
 
@@ -261,235 +283,330 @@ int Cpu::undocumented() {
   return 4;
 }
 
-// The opcode map: x = bits 7-6 picks a quarter, z = bits 2-0 a column of
+void Cpu::rim() {
+  regs.a = rim_value();
+  rim_after_trap_ = false;
+}
+
+void Cpu::sim() {
+  const std::uint8_t a = regs.a;
+  if (a & 0x08) masks_ = a & 0x07;
+  if (a & 0x10) rst75_latch_ = false;
+  if (a & 0x40) sod_ = (a & 0x80) != 0;
+  update_attention();
+}
+
+// ---- The opcode map ---------------------------------------------------------
+// OP's fields: x = bits 7-6 picks a quarter, z = bits 2-0 a column of
 // quarters 0 and 3, y = bits 5-3 the row (a register, condition or
-// operation). Each entry is one instruction group. Flattened: the groups
-// are inlined here, so that the split costs the hot loop no calls.
-[[gnu::flatten]] int Cpu::execute(std::uint8_t op) {
-  const int y = op_y(op), z = op_z(op);
-  const bool m85 = is_8085();
-  switch (op_x(op)) {
-    case 1: return halt_or_move(op);
-    case 2: alu(y, get_reg(z)); return z == 6 ? 7 : 4;
-    case 0:
-      switch (z) {
-        case 0: return nop_rim_sim(op);
-        case 1: return lxi_or_dad(op);
-        case 2: return load_or_store(y);
-        case 3: return inx_or_dcx(op);
-        case 4: set_reg(y, inr(get_reg(y))); return y == 6 ? 10 : (m85 ? 4 : 5);
-        case 5: set_reg(y, dcr(get_reg(y))); return y == 6 ? 10 : (m85 ? 4 : 5);
-        case 6: set_reg(y, fetch8()); return y == 6 ? 10 : 7;  // MVI
-        default: return rotate_or_carry(y);
-      }
-    default:
-      switch (z) {
-        case 0: return return_if(y);
-        case 1: return pop_or_return(op);
-        case 2: return jump_if(y);
-        case 3: return jmp_out_in_xthl_xchg_di_ei(op);
-        case 4: return call_if(y);
-        case 5: return push_or_call(op);
-        case 6: alu(y, fetch8()); return 7;  // ALU immediate
-        default: call(static_cast<std::uint16_t>(y * 8)); return m85 ? 12 : 11;  // RST
-      }
-  }
-}
+// operation), p = bits 5-4 a register pair. Every handler is a template on
+// the opcode, so that its fields, registers and T-states are constants.
 
-int Cpu::halt_or_move(std::uint8_t op) {
-  const bool m85 = is_8085();
-  if (op == 0x76) {  // HLT
+template <Mode M, bool D, int OP>
+[[gnu::always_inline]] inline int Cpu::exec() {
+  constexpr int x = OP >> 6, y = (OP >> 3) & 7, z = OP & 7;
+  constexpr bool m85 = is85(M);
+  if constexpr (OP == 0x76) {  // HLT
     halted_ = true;
+    attention_ = true;
     return m85 ? 5 : 7;
+  } else if constexpr (x == 1) {  // MOV
+    set_r<D, y>(get_r<D, z>());
+    return (y == 6 || z == 6) ? 7 : (m85 ? 4 : 5);
+  } else if constexpr (x == 2) {  // ALU register
+    alu<M, y>(get_r<D, z>());
+    return z == 6 ? 7 : 4;
+  } else if constexpr (x == 0) {
+    return quarter0<M, D, OP>();
+  } else {
+    return quarter3<M, D, OP>();
   }
-  const int dst = op_y(op), src = op_z(op);
-  set_reg(dst, get_reg(src));
-  if (dst == 6 || src == 6) return 7;
-  return m85 ? 4 : 5;
 }
 
-int Cpu::nop_rim_sim(std::uint8_t op) {
-  if (!is_8085()) return 4;  // the 8080's NOP and its aliases
-  if (op == 0x20) {  // RIM
-    regs.a = rim_value();
-    rim_after_trap_ = false;
-    return 4;
-  }
-  if (op == 0x30) {  // SIM
-    const std::uint8_t a = regs.a;
-    if (a & 0x08) masks_ = a & 0x07;
-    if (a & 0x10) rst75_latch_ = false;
-    if (a & 0x40) sod_ = (a & 0x80) != 0;
-    return 4;
-  }
-  if (op != 0x00) return undocumented();
-  return 4;  // NOP
-}
-
-int Cpu::lxi_or_dad(std::uint8_t op) {
-  const int rp = op_rp(op);
-  if ((op_y(op) & 1) == 0) {  // LXI
-    set_rp(rp, fetch16());
+template <Mode M, bool D, int OP>
+[[gnu::always_inline]] inline int Cpu::quarter0() {
+  constexpr int y = (OP >> 3) & 7, z = OP & 7, p = (OP >> 4) & 3;
+  constexpr bool m85 = is85(M);
+  if constexpr (z == 0) {
+    if constexpr (!m85 || OP == 0x00) return 4;  // NOP (the 8080's aliases too)
+    else if constexpr (OP == 0x20) { rim(); return 4; }
+    else if constexpr (OP == 0x30) { sim(); return 4; }
+    else return undocumented();
+  } else if constexpr (z == 1 && (y & 1) == 0) {  // LXI
+    set_rp<p>(imm16<D>());
     return 10;
+  } else if constexpr (z == 1) {  // DAD
+    const std::uint32_t r = static_cast<std::uint32_t>(regs.hl()) + get_rp<p>();
+    set_rp<2>(static_cast<std::uint16_t>(r));
+    set_carry((r >> 16) & 1u);
+    return 10;
+  } else if constexpr (z == 2) {
+    return load_store<M, D, OP>();
+  } else if constexpr (z == 3) {  // INX DCX
+    set_rp<p>(static_cast<std::uint16_t>(get_rp<p>() + ((y & 1) ? 0xFFFF : 1)));
+    return m85 ? 6 : 5;
+  } else if constexpr (z == 4 || z == 5) {  // INR DCR
+    const auto r = static_cast<std::uint8_t>(get_r<D, y>() + (z == 4 ? 1 : 0xFF));
+    regs.f = static_cast<std::uint8_t>((regs.f & flag::CY) | (z == 4 ? kInr[r] : kDcr[r]) | fixed_flags(M));
+    set_r<D, y>(r);
+    return y == 6 ? 10 : (m85 ? 4 : 5);
+  } else if constexpr (z == 6) {  // MVI
+    set_r<D, y>(imm8<D>());
+    return y == 6 ? 10 : 7;
+  } else {
+    return rotate<M, D, OP>();
   }
-  // DAD
-  const std::uint32_t r = static_cast<std::uint32_t>(regs.hl()) + get_rp(rp);
-  set_rp(2, static_cast<std::uint16_t>(r));
-  regs.f = static_cast<std::uint8_t>((regs.f & ~flag::CY) | ((r >> 16) & 1u ? flag::CY : 0));
-  return 10;
 }
 
 // STAX LDAX SHLD LHLD STA LDA.
-int Cpu::load_or_store(int y) {
-  switch (y) {
-    case 0: write(regs.bc(), regs.a); return 7;  // STAX B
-    case 2: write(regs.de(), regs.a); return 7;  // STAX D
-    case 4: {  // SHLD
-      const std::uint16_t a = fetch16();
-      write(a, regs.l);
-      write(static_cast<std::uint16_t>(a + 1), regs.h);
-      return 16;
-    }
-    case 6: write(fetch16(), regs.a); return 13;  // STA
-    case 1: regs.a = read(regs.bc()); return 7;   // LDAX B
-    case 3: regs.a = read(regs.de()); return 7;   // LDAX D
-    case 5: {  // LHLD
-      const std::uint16_t a = fetch16();
-      regs.l = read(a);
-      regs.h = read(static_cast<std::uint16_t>(a + 1));
-      return 16;
-    }
-    default: regs.a = read(fetch16()); return 13;  // LDA
+template <Mode M, bool D, int OP>
+[[gnu::always_inline]] inline int Cpu::load_store() {
+  constexpr int y = (OP >> 3) & 7;
+  if constexpr (y == 0) { wr<D>(regs.bc(), regs.a); return 7; }   // STAX B
+  else if constexpr (y == 1) { regs.a = rd<D>(regs.bc()); return 7; }  // LDAX B
+  else if constexpr (y == 2) { wr<D>(regs.de(), regs.a); return 7; }   // STAX D
+  else if constexpr (y == 3) { regs.a = rd<D>(regs.de()); return 7; }  // LDAX D
+  else if constexpr (y == 4) {  // SHLD
+    const std::uint16_t a = imm16<D>();
+    wr<D>(a, regs.l);
+    wr<D>(static_cast<std::uint16_t>(a + 1), regs.h);
+    return 16;
+  } else if constexpr (y == 5) {  // LHLD
+    const std::uint16_t a = imm16<D>();
+    regs.l = rd<D>(a);
+    regs.h = rd<D>(static_cast<std::uint16_t>(a + 1));
+    return 16;
+  } else if constexpr (y == 6) {  // STA
+    wr<D>(imm16<D>(), regs.a);
+    return 13;
+  } else {  // LDA
+    regs.a = rd<D>(imm16<D>());
+    return 13;
   }
 }
-
-int Cpu::inx_or_dcx(std::uint8_t op) {
-  const int rp = op_rp(op);
-  set_rp(rp, static_cast<std::uint16_t>(get_rp(rp) + ((op_y(op) & 1) ? -1 : 1)));
-  return is_8085() ? 6 : 5;
-}
-
-void Cpu::set_carry(bool c) { regs.f = static_cast<std::uint8_t>((regs.f & ~flag::CY) | (c ? flag::CY : 0)); }
 
 // RLC RRC RAL RAR DAA CMA STC CMC.
-int Cpu::rotate_or_carry(int y) {
+template <Mode M, bool D, int OP>
+[[gnu::always_inline]] inline int Cpu::rotate() {
+  constexpr int y = (OP >> 3) & 7;
   const std::uint8_t a = regs.a;
-  const bool cy = (regs.f & flag::CY) != 0;
-  switch (y) {
-    case 0: regs.a = static_cast<std::uint8_t>(a << 1 | a >> 7); set_carry(a & 0x80); break;  // RLC
-    case 1: regs.a = static_cast<std::uint8_t>(a >> 1 | a << 7); set_carry(a & 0x01); break;  // RRC
-    case 2: regs.a = static_cast<std::uint8_t>(a << 1 | (cy ? 1 : 0)); set_carry(a & 0x80); break;  // RAL
-    case 3: regs.a = static_cast<std::uint8_t>(a >> 1 | (cy ? 0x80 : 0)); set_carry(a & 0x01); break;  // RAR
-    case 4: daa(); break;
-    case 5: regs.a = static_cast<std::uint8_t>(~a); break;  // CMA
-    case 6: set_carry(true); break;                         // STC
-    default: set_carry(!cy); break;                         // CMC
-  }
+  const unsigned cy = regs.f & flag::CY;
+  if constexpr (y == 0) { regs.a = static_cast<std::uint8_t>(a << 1 | a >> 7); set_carry(a & 0x80); }
+  else if constexpr (y == 1) { regs.a = static_cast<std::uint8_t>(a >> 1 | a << 7); set_carry(a & 0x01); }
+  else if constexpr (y == 2) { regs.a = static_cast<std::uint8_t>(a << 1 | cy); set_carry(a & 0x80); }
+  else if constexpr (y == 3) { regs.a = static_cast<std::uint8_t>(a >> 1 | cy << 7); set_carry(a & 0x01); }
+  else if constexpr (y == 4) daa<M>();
+  else if constexpr (y == 5) regs.a = static_cast<std::uint8_t>(~a);  // CMA
+  else if constexpr (y == 6) set_carry(true);                          // STC
+  else set_carry(!cy);                                                 // CMC
   return 4;
 }
 
-// Rcc.
-int Cpu::return_if(int cc) {
-  const bool m85 = is_8085();
-  if (condition(cc)) {
-    regs.pc = pop();
+template <Mode M, bool D, int OP>
+[[gnu::always_inline]] inline int Cpu::quarter3() {
+  constexpr int y = (OP >> 3) & 7, z = OP & 7;
+  constexpr bool m85 = is85(M);
+  if constexpr (z == 0) {  // Rcc
+    if (!condition<y>()) return m85 ? 6 : 5;
+    regs.pc = pop<D>();
+    return m85 ? 12 : 11;
+  } else if constexpr (z == 1) {
+    return pop_ret<M, D, OP>();
+  } else if constexpr (z == 2) {  // Jcc
+    const std::uint16_t a = imm16<D>();
+    if (!condition<y>()) return m85 ? 7 : 10;
+    regs.pc = a;
+    return 10;
+  } else if constexpr (z == 3) {
+    return jmp_io_misc<M, D, OP>();
+  } else if constexpr (z == 4) {  // Ccc
+    const std::uint16_t a = imm16<D>();
+    if (!condition<y>()) return m85 ? 9 : 11;
+    push<D>(regs.pc);
+    regs.pc = a;
+    return m85 ? 18 : 17;
+  } else if constexpr (z == 5) {
+    return push_call<M, D, OP>();
+  } else if constexpr (z == 6) {  // ALU immediate
+    alu<M, y>(imm8<D>());
+    return 7;
+  } else {  // RST
+    push<D>(regs.pc);
+    regs.pc = static_cast<std::uint16_t>(y * 8);
     return m85 ? 12 : 11;
   }
-  return m85 ? 6 : 5;
 }
 
 // POP, and RET (D9 is an RET alias on the 8080, SHLX on the 8085) PCHL SPHL.
-int Cpu::pop_or_return(std::uint8_t op) {
-  const int rp = op_rp(op);
-  const bool m85 = is_8085();
-  if ((op_y(op) & 1) == 0) {  // POP
-    const std::uint16_t v = pop();
-    if (rp == 3) {
+template <Mode M, bool D, int OP>
+[[gnu::always_inline]] inline int Cpu::pop_ret() {
+  constexpr int p = (OP >> 4) & 3;
+  constexpr bool m85 = is85(M);
+  if constexpr (((OP >> 3) & 1) == 0) {  // POP
+    const std::uint16_t v = pop<D>();
+    if constexpr (p == 3) {
       regs.a = static_cast<std::uint8_t>(v >> 8);
-      regs.f = static_cast<std::uint8_t>((v & flag::kDefined) | fixed_flags(mode_));
+      regs.f = static_cast<std::uint8_t>((v & flag::kDefined) | fixed_flags(M));
     } else {
-      set_rp(rp, v);
+      set_rp<p>(v);
     }
     return 10;
-  }
-  switch (rp) {
-    case 1:
-      if (m85) return undocumented();  // SHLX
-      [[fallthrough]];
-    case 0: regs.pc = pop(); return 10;  // RET
-    case 2: regs.pc = regs.hl(); return m85 ? 6 : 5;  // PCHL
-    default: regs.sp = regs.hl(); return m85 ? 6 : 5;  // SPHL
-  }
-}
-
-// Jcc.
-int Cpu::jump_if(int cc) {
-  const std::uint16_t a = fetch16();
-  if (condition(cc)) {
-    regs.pc = a;
+  } else if constexpr (p == 1 && m85) {
+    return undocumented();  // SHLX
+  } else if constexpr (p <= 1) {
+    regs.pc = pop<D>();  // RET
     return 10;
+  } else if constexpr (p == 2) {
+    regs.pc = regs.hl();  // PCHL
+    return m85 ? 6 : 5;
+  } else {
+    regs.sp = regs.hl();  // SPHL
+    return m85 ? 6 : 5;
   }
-  return is_8085() ? 7 : 10;
 }
 
 // JMP (CB is a JMP alias on the 8080, RSTV on the 8085) OUT IN XTHL XCHG DI EI.
-int Cpu::jmp_out_in_xthl_xchg_di_ei(std::uint8_t op) {
-  switch (op_y(op)) {
-    case 1:
-      if (is_8085()) return undocumented();  // RSTV
-      [[fallthrough]];
-    case 0: regs.pc = fetch16(); return 10;  // JMP
-    case 2: bus_.out(fetch8(), regs.a); return 10;  // OUT
-    case 3: regs.a = bus_.in(fetch8()); return 10;  // IN
-    case 4: return xthl();
-    case 5: {  // XCHG
-      std::swap(regs.d, regs.h);
-      std::swap(regs.e, regs.l);
-      return 4;
-    }
-    case 6: ie_ = false; ei_delay_ = false; return 4;  // DI
-    default: ie_ = true; ei_delay_ = true; return 4;   // EI
+template <Mode M, bool D, int OP>
+[[gnu::always_inline]] inline int Cpu::jmp_io_misc() {
+  constexpr int y = (OP >> 3) & 7;
+  constexpr bool m85 = is85(M);
+  if constexpr (y == 1 && m85) {
+    return undocumented();  // RSTV
+  } else if constexpr (y <= 1) {
+    regs.pc = imm16<D>();  // JMP
+    return 10;
+  } else if constexpr (y == 2) {
+    const std::uint8_t port = imm8<D>();
+    bus_.out(port, regs.a);
+    return 10;
+  } else if constexpr (y == 3) {
+    regs.a = bus_.in(imm8<D>());
+    return 10;
+  } else if constexpr (y == 4) {  // XTHL
+    const std::uint16_t sp1 = static_cast<std::uint16_t>(regs.sp + 1);
+    const std::uint8_t lo = rd<D>(regs.sp), hi = rd<D>(sp1);
+    wr<D>(regs.sp, regs.l);
+    wr<D>(sp1, regs.h);
+    regs.l = lo;
+    regs.h = hi;
+    return m85 ? 16 : 18;
+  } else if constexpr (y == 5) {  // XCHG
+    std::swap(regs.d, regs.h);
+    std::swap(regs.e, regs.l);
+    return 4;
+  } else if constexpr (y == 6) {  // DI
+    ie_ = false;
+    ei_delay_ = false;
+    update_attention();
+    return 4;
+  } else {  // EI
+    ie_ = true;
+    ei_delay_ = true;
+    attention_ = true;
+    return 4;
   }
-}
-
-int Cpu::xthl() {
-  const std::uint8_t lo = read(regs.sp);
-  const std::uint8_t hi = read(static_cast<std::uint16_t>(regs.sp + 1));
-  write(regs.sp, regs.l);
-  write(static_cast<std::uint16_t>(regs.sp + 1), regs.h);
-  regs.l = lo;
-  regs.h = hi;
-  return is_8085() ? 16 : 18;
-}
-
-void Cpu::call(std::uint16_t a) {
-  push(regs.pc);
-  regs.pc = a;
-}
-
-// Ccc.
-int Cpu::call_if(int cc) {
-  const bool m85 = is_8085();
-  const std::uint16_t a = fetch16();
-  if (condition(cc)) {
-    call(a);
-    return m85 ? 18 : 17;
-  }
-  return m85 ? 9 : 11;
 }
 
 // PUSH, and CALL (DD ED FD are CALL aliases on the 8080, JNX5 LHLX JK on the
 // 8085).
-int Cpu::push_or_call(std::uint8_t op) {
-  const int y = op_y(op), rp = op_rp(op);
-  const bool m85 = is_8085();
-  if ((y & 1) == 0) {  // PUSH
-    push(rp == 3 ? static_cast<std::uint16_t>(regs.a << 8 | regs.f) : get_rp(rp));
+template <Mode M, bool D, int OP>
+[[gnu::always_inline]] inline int Cpu::push_call() {
+  constexpr int y = (OP >> 3) & 7, p = (OP >> 4) & 3;
+  constexpr bool m85 = is85(M);
+  if constexpr ((y & 1) == 0) {  // PUSH
+    if constexpr (p == 3)
+      push<D>(static_cast<std::uint16_t>(regs.a << 8 | regs.f));
+    else
+      push<D>(get_rp<p>());
     return m85 ? 12 : 11;
+  } else if constexpr (y != 1 && m85) {
+    return undocumented();  // JNX5 LHLX JK
+  } else {
+    const std::uint16_t a = imm16<D>();
+    push<D>(regs.pc);
+    regs.pc = a;
+    return m85 ? 18 : 17;
   }
-  if (y != 1 && m85) return undocumented();  // JNX5 LHLX JK
-  call(fetch16());
-  return m85 ? 18 : 17;
+}
+
+// One opcode: a switch over all 256, which the compiler turns into a jump
+// table, each case the opcode's handler inlined with its fields constant.
+#define I8085_CASE(n) \
+  case (n): return exec<M, D, (n)>();
+#define I8085_CASE4(n) I8085_CASE(n) I8085_CASE((n) + 1) I8085_CASE((n) + 2) I8085_CASE((n) + 3)
+#define I8085_CASE16(n) I8085_CASE4(n) I8085_CASE4((n) + 4) I8085_CASE4((n) + 8) I8085_CASE4((n) + 12)
+#define I8085_CASE64(n) I8085_CASE16(n) I8085_CASE16((n) + 16) I8085_CASE16((n) + 32) I8085_CASE16((n) + 48)
+
+template <Mode M, bool D>
+int Cpu::dispatch(std::uint8_t op) {
+  switch (op) {
+    I8085_CASE64(0x00)
+    I8085_CASE64(0x40)
+    I8085_CASE64(0x80)
+    I8085_CASE64(0xC0)
+  }
+  __builtin_unreachable();
+}
+
+#undef I8085_CASE64
+#undef I8085_CASE16
+#undef I8085_CASE4
+#undef I8085_CASE
+
+// ---- Steps ------------------------------------------------------------------
+
+// An instruction with nothing pending: the record of last() written field
+// by field, no call but the dispatch.
+template <Mode M, bool D>
+int Cpu::fast_step() {
+  const std::uint16_t pc = regs.pc;
+  const std::uint8_t op = rd<D>(pc);
+  regs.pc = static_cast<std::uint16_t>(pc + 1);
+  last_.t_before = t_;
+  last_.pc = pc;
+  last_.bytes = {op, 0, 0};
+  last_.length = 1;
+  last_.kind = StepKind::instruction;
+  last_.irq = Interrupt::none;
+  last_.undocumented = false;
+  const int t = dispatch<M, D>(op);
+  last_.tstates = t;
+  t_ += static_cast<std::uint64_t>(t);
+  return t;
+}
+
+int Cpu::step() {
+  if (attention_) [[unlikely]]
+    return step_slow();
+  if (mode_ == Mode::i8085) return mem_ ? fast_step<Mode::i8085, true>() : fast_step<Mode::i8085, false>();
+  return mem_ ? fast_step<Mode::i8080, true>() : fast_step<Mode::i8080, false>();
+}
+
+// One opcode through the Bus (the slow path and INTR acknowledges).
+int Cpu::execute(std::uint8_t op) {
+  return mode_ == Mode::i8085 ? dispatch<Mode::i8085, false>(op) : dispatch<Mode::i8080, false>(op);
+}
+
+int Cpu::step_slow() {
+  last_ = Step{};
+  last_.t_before = t_;
+  last_.pc = regs.pc;
+  last_.mode = mode_;
+  const bool maskable_allowed = ie_ && !ei_delay_;
+  ei_delay_ = false;
+  int t;
+  if (const Interrupt irq = pending(maskable_allowed); irq != Interrupt::none) {
+    t = acknowledge(irq);
+  } else if (halted_) {
+    last_.kind = StepKind::idle;
+    t = kHaltIdleTStates;
+  } else {
+    t = execute(imm8<false>());
+  }
+  last_.tstates = t;
+  t_ += static_cast<std::uint64_t>(t);
+  update_attention();
+  return t;
 }
 
 Interrupt Cpu::pending(bool maskable_allowed) const {
@@ -522,36 +639,14 @@ int Cpu::acknowledge(Interrupt irq) {
     case Interrupt::rst55: vector = kRst55Vector; break;
     default: {  // INTR: execute the instruction the bus supplies
       from_inta_ = true;
-      const std::uint8_t op = fetch8();
-      const int t = execute(op);
+      const int t = execute(imm8<false>());
       from_inta_ = false;
       return t;
     }
   }
-  push(regs.pc);
+  push<false>(regs.pc);
   regs.pc = vector;
   return kVectoredAckTStates;
-}
-
-int Cpu::step() {
-  last_ = Step{};
-  last_.t_before = t_;
-  last_.pc = regs.pc;
-  last_.mode = mode_;
-  const bool maskable_allowed = ie_ && !ei_delay_;
-  ei_delay_ = false;
-  int t;
-  if (const Interrupt irq = pending(maskable_allowed); irq != Interrupt::none) {
-    t = acknowledge(irq);
-  } else if (halted_) {
-    last_.kind = StepKind::idle;
-    t = kHaltIdleTStates;
-  } else {
-    t = execute(fetch8());
-  }
-  last_.tstates = t;
-  t_ += static_cast<std::uint64_t>(t);
-  return t;
 }
 
 bool is_undocumented_8085(std::uint8_t op) {

@@ -52,6 +52,10 @@ class Bus {
   virtual std::uint8_t in(std::uint8_t port) = 0;
   virtual void out(std::uint8_t port, std::uint8_t v) = 0;
   virtual std::uint8_t inta() { return 0xFF; }  // RST 7
+  // 64 KiB that read() and write() read and write with no side effect, or
+  // nullptr. When there is one, the Cpu reads and writes it directly: no
+  // virtual call per memory cycle (the hot loop of docs/i8085.md, "Speed").
+  virtual std::uint8_t* memory() { return nullptr; }
 };
 
 // What one step() did.
@@ -121,46 +125,48 @@ class Cpu {
   Regs regs{};
 
  private:
-  std::uint8_t fetch8();
-  std::uint16_t fetch16();
-  std::uint8_t read(std::uint16_t a) { return bus_.read(a); }
-  void write(std::uint16_t a, std::uint8_t v) { bus_.write(a, v); }
-  void push(std::uint16_t v);
-  std::uint16_t pop();
-  std::uint8_t get_reg(int r);
-  void set_reg(int r, std::uint8_t v);
-  std::uint16_t get_rp(int rp) const;  // 0 BC, 1 DE, 2 HL, 3 SP
-  void set_rp(int rp, std::uint16_t v);
-  bool condition(int cc) const;
-  void alu(int op, std::uint8_t v);
-  std::uint8_t inr(std::uint8_t v);
-  std::uint8_t dcr(std::uint8_t v);
-  void daa();
-  bool is_8085() const { return mode_ == Mode::i8085; }
-  void set_carry(bool c);
-  void call(std::uint16_t a);
-  // Executes one opcode (its operand bytes fetched here); returns T-states.
-  int execute(std::uint8_t op);
-  // The instruction groups of execute(), by opcode map column.
-  int halt_or_move(std::uint8_t op);
-  int nop_rim_sim(std::uint8_t op);
-  int lxi_or_dad(std::uint8_t op);
-  int load_or_store(int y);
-  int inx_or_dcx(std::uint8_t op);
-  int rotate_or_carry(int y);
-  int return_if(int cc);
-  int pop_or_return(std::uint8_t op);
-  int jump_if(int cc);
-  int jmp_out_in_xthl_xchg_di_ei(std::uint8_t op);
-  int xthl();
-  int call_if(int cc);
-  int push_or_call(std::uint8_t op);
+  // The hot loop (cpu.cpp): one instruction with nothing pending, per mode,
+  // memory direct (D) or through the Bus. `attention_` says that the next
+  // step must take the slow path: halted, EI delay, an interrupt that may be
+  // pending; update_attention() recomputes it after every change of those.
+  template <Mode M, bool D> int fast_step();
+  template <Mode M, bool D> int dispatch(std::uint8_t op);
+  template <Mode M, bool D, int OP> int exec();
+  template <Mode M, bool D, int OP> int quarter0();
+  template <Mode M, bool D, int OP> int quarter3();
+  template <Mode M, bool D, int OP> int load_store();
+  template <Mode M, bool D, int OP> int rotate();
+  template <Mode M, bool D, int OP> int pop_ret();
+  template <Mode M, bool D, int OP> int jmp_io_misc();
+  template <Mode M, bool D, int OP> int push_call();
+  template <bool D> std::uint8_t rd(std::uint16_t a) { return D ? mem_[a] : bus_.read(a); }
+  template <bool D> void wr(std::uint16_t a, std::uint8_t v);
+  template <bool D> std::uint8_t imm8();
+  template <bool D> std::uint16_t imm16();
+  template <bool D> void push(std::uint16_t v);
+  template <bool D> std::uint16_t pop();
+  template <bool D, int R> std::uint8_t get_r();
+  template <bool D, int R> void set_r(std::uint8_t v);
+  template <int RP> std::uint16_t get_rp() const;
+  template <int RP> void set_rp(std::uint16_t v);
+  template <int CC> bool condition() const;
+  template <Mode M, int OP> void alu(std::uint8_t v);
+  template <Mode M> void daa();
+  void set_carry(bool c) { regs.f = static_cast<std::uint8_t>((regs.f & ~flag::CY) | (c ? flag::CY : 0)); }
   int undocumented();
+  void rim();
+  void sim();
+  void update_attention();
+  // The slow path: interrupts, halted idle units, the EI delay, INTR.
+  int step_slow();
+  int execute(std::uint8_t op);
   Interrupt pending(bool maskable_allowed) const;
   int acknowledge(Interrupt irq);
 
   Bus& bus_;
+  std::uint8_t* mem_;          // bus_.memory()
   Mode mode_;
+  bool attention_ = true;
   std::uint64_t t_ = 0;
   Step last_{};
   bool halted_ = false;

@@ -4,19 +4,39 @@
 
 namespace i8085 {
 
+namespace {
+
+[[noreturn, gnu::cold, gnu::noinline]] void throw_undocumented(const Step& s) {
+  throw RunError("undocumented 8085 opcode " + hex2(s.bytes[0]) + " (" + disassemble(s.bytes, s.mode) + ") at PC=" +
+                 hex4(s.pc) + ": not implemented (docs/i8085.md)");
+}
+
+[[noreturn, gnu::cold, gnu::noinline]] void throw_limit(const Machine& m, const RunOptions& opt) {
+  throw RunError("stopped after " + std::to_string(m.tstates()) + " T-states, past the limit " +
+                 std::to_string(opt.max_tstates) + " (PC=" + hex4(m.regs().pc) + "): the program did not finish");
+}
+
+[[gnu::cold, gnu::noinline]] void stamp_and_trace(const Machine& m, RamBus& bus, const RunOptions& opt,
+                                                  std::size_t outs_before) {
+  const Step& s = m.last();
+  for (std::size_t i = outs_before; i < bus.outs.size(); ++i) bus.outs[i].t = s.t_before;
+  if (opt.trace) *opt.trace << trace_line(s, m.regs()) << '\n';
+}
+
+}  // namespace
+
+// The runners' hot loop: what is rare (a port write, a trace, an error) is
+// out of line.
 void run_step(Machine& m, RamBus& bus, const RunOptions& opt, RunResult& res) {
   const std::size_t outs_before = bus.outs.size();
   m.step();
   ++res.steps;
-  const Step& s = m.last();
-  for (std::size_t i = outs_before; i < bus.outs.size(); ++i) bus.outs[i].t = s.t_before;
-  if (opt.trace) *opt.trace << trace_line(s, m.regs()) << '\n';
-  if (s.undocumented)
-    throw RunError("undocumented 8085 opcode " + hex2(s.bytes[0]) + " (" + disassemble(s.bytes, s.mode) +
-                   ") at PC=" + hex4(s.pc) + ": not implemented (docs/i8085.md)");
-  if (opt.max_tstates != 0 && m.tstates() > opt.max_tstates)
-    throw RunError("stopped after " + std::to_string(m.tstates()) + " T-states, past the limit " +
-                   std::to_string(opt.max_tstates) + " (PC=" + hex4(m.regs().pc) + "): the program did not finish");
+  if (opt.trace || bus.outs.size() != outs_before) [[unlikely]]
+    stamp_and_trace(m, bus, opt, outs_before);
+  if (m.last().undocumented) [[unlikely]]
+    throw_undocumented(m.last());
+  if (opt.max_tstates != 0 && m.tstates() > opt.max_tstates) [[unlikely]]
+    throw_limit(m, opt);
 }
 
 std::uint16_t load_program(RamBus& bus, const std::vector<std::uint8_t>& file, const std::string& name,

@@ -24,11 +24,14 @@ struct PortWrite {
 };
 
 // RAM everywhere; IN returns inputs[port] (0xFF unless set); OUT is logged.
+// The Cpu reads and writes `mem` directly (memory()): read and write are
+// final, so that no derived bus can give them side effects it would miss.
 class RamBus : public Bus {
  public:
   RamBus() { inputs.fill(0xFF); }
-  std::uint8_t read(std::uint16_t addr) override { return mem[addr]; }
-  void write(std::uint16_t addr, std::uint8_t v) override { mem[addr] = v; }
+  std::uint8_t read(std::uint16_t addr) final { return mem[addr]; }
+  void write(std::uint16_t addr, std::uint8_t v) final { mem[addr] = v; }
+  std::uint8_t* memory() final { return mem.data(); }
   std::uint8_t in(std::uint8_t port) override { return inputs[port]; }
   void out(std::uint8_t port, std::uint8_t v) override { outs.push_back({0, port, v}); }
 
