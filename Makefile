@@ -64,6 +64,8 @@ bench: build
 	@$(CMAKE) --build $(BUILD) -j$(JOBS) --target benches
 	@$(BUILD)/model/bench/contour_bench
 	@$(BUILD)/model/bench/interp_ipp
+	@$(BUILD)/model/bench/iss_ipt
+	@$(BUILD)/tb/cpu8085/cpu8085_tps
 
 synth: deps
 	@$(MAKE) --no-print-directory -C rtl/synth BUILD=$(abspath $(BUILD))/synth
