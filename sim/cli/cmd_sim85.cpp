@@ -117,6 +117,22 @@ class ConsoleBuf : public std::streambuf {
   char last_ = '\n';
 };
 
+i8085::Mode parse_cpu(const Args& args) {
+  const std::string cpu = args.option_or("cpu", "8085");
+  if (cpu == "8085") return i8085::Mode::i8085;
+  if (cpu == "8080") return i8085::Mode::i8080;
+  throw UsageError("--cpu: '" + cpu + "' is not 8080 or 8085");
+}
+
+// --max-tstates N (0: no limit), else the default limit.
+std::uint64_t parse_max_tstates(const Args& args) {
+  const auto m = args.option("max-tstates");
+  if (!m) return kDefaultMaxTstates;
+  const std::int64_t n = parse_int(*m, "--max-tstates");
+  if (n < 0) throw UsageError("--max-tstates: '" + *m + "' must be 0 (no limit) or positive");
+  return static_cast<std::uint64_t>(n);
+}
+
 int cmd_sim85(const std::vector<std::string>& argv) {
   const Args args(argv, {"cpm", "progress", "no-progress"}, {"cpu", "trace", "max-tstates", "engine"});
   if (args.help()) {
@@ -126,11 +142,7 @@ int cmd_sim85(const std::vector<std::string>& argv) {
   args.expect_positional({"FILE"});
   const std::string path = args.positional()[0];
 
-  const std::string cpu = args.option_or("cpu", "8085");
-  i8085::Mode mode;
-  if (cpu == "8085") mode = i8085::Mode::i8085;
-  else if (cpu == "8080") mode = i8085::Mode::i8080;
-  else throw UsageError("--cpu: '" + cpu + "' is not 8080 or 8085");
+  const i8085::Mode mode = parse_cpu(args);
 
   const std::string engine = args.option_or("engine", "iss");
   auto it = i8085::machines().find(engine);
@@ -138,12 +150,7 @@ int cmd_sim85(const std::vector<std::string>& argv) {
     throw UsageError(unknown_engine(engine, i8085::machine_names()));
 
   i8085::RunOptions opt;
-  opt.max_tstates = kDefaultMaxTstates;
-  if (auto m = args.option("max-tstates")) {
-    const std::int64_t n = parse_int(*m, "--max-tstates");
-    if (n < 0) throw UsageError("--max-tstates: '" + *m + "' must be 0 (no limit) or positive");
-    opt.max_tstates = static_cast<std::uint64_t>(n);
-  }
+  opt.max_tstates = parse_max_tstates(args);
   const ProgressMode show_progress = progress_wanted(args);
   std::ofstream trace;
   if (auto t = args.option("trace")) {
