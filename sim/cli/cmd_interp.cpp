@@ -198,7 +198,7 @@ int run_move(const Args& a, const Move& m) {
   }
   Progress progress(progress_wanted(a), describe(m) + " [engine " + engine_name + "]", "pulses");
   const std::uint64_t total = expected_pulses(m);
-  Output out(format == "svg" ? std::nullopt : out_path);
+  Output out(out_path);  // svg: opened here to refuse an unwritable path before the run
   if (format == "json")
     std::fprintf(out.file(), "{\"engine\": \"%s\", \"move\": \"%s\", \"pulses\": [", engine_name.c_str(),
                  describe(m).c_str());
