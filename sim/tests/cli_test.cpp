@@ -149,6 +149,16 @@ std::string read_text(const std::string& path) {
   return s.str();
 }
 
+// Output timing in nanoseconds beside clocks: 2us and 1500ns are 100 and 75
+// clocks of the core's 50 MHz, as the report's command line shows.
+TEST(Cli, CosimStepTimingTakesDurations) {
+  const std::string dir = ::testing::TempDir() + "cosim_ns";
+  const ProcessResult o = contour("cosim --suite paper --rate 4k --engines model,core --step-len 2us --step-space 1500ns "
+                                  "--no-progress --report " + dir);
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(read_text(dir + "/report.json").find("--step-len 100 --step-space 75 "), std::string::npos);
+}
+
 // A move of 8 000 000 pulses kept in memory takes hundreds of MB (48 bytes a
 // step); streamed, a few MB whatever the length. 50 MB: the bound.
 constexpr long kStreamRssLimitKb = 50 * 1024;
