@@ -236,6 +236,15 @@ TEST(CliSim85, OutputIsWrittenAsTheProgramRuns) {
   EXPECT_NE(o.err.find("past the limit 1000"), std::string::npos) << o.err;
 }
 
+TEST(CliSim85, ForcedProgressCountsTStatesAgainstTheLimit) {
+  const std::string bin = write_binary("jmp_progress.bin", std::string("\xC3\x00\x00", 3));
+  const ProcessResult o = contour("sim85 " + bin + " --max-tstates 20000000 --progress");
+  EXPECT_EQ(o.status, 1);
+  EXPECT_NE(o.err.find("sim85 " + bin + ": "), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find(" of 20000000 T-states ("), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("\rcontour sim85: "), std::string::npos) << "the progress line is wiped first: " << o.err;
+}
+
 // A program that never halts (JMP 0000) ends at the documented default
 // limit (a few seconds on the ISS).
 TEST(CliSim85, DefaultLimitEndsAProgramThatNeverHalts) {
