@@ -155,10 +155,32 @@ void take_step(const Move& m, const std::string& format, std::FILE* out, Tally& 
   t.worst = std::max(t.worst, deviation(m, s.state.x, s.state.y));
 }
 
-// The pulses of a line, exactly; for an arc 0 (not known beforehand).
+// The pulses of an arc, estimated for the progress line: the distance X
+// and Y travel along the ideal arc (each axis' total variation, summed
+// between the quadrant boundaries the arc crosses). The pulse path differs
+// by a few pulses.
+std::uint64_t arc_pulses_estimate(const Move& m) {
+  const double R = std::hypot(double(m.xs), double(m.ys));
+  const double a0 = std::atan2(double(m.ys), double(m.xs));
+  const double dir = m.sense == Sense::CCW ? 1 : -1;
+  double sweep = dir * (std::atan2(double(m.ye), double(m.xe)) - a0);
+  while (sweep <= 1e-12) sweep += 2 * M_PI;
+  double travel = 0, prev = 0;
+  for (double next = 0; prev < sweep; prev = next) {
+    // The next quadrant boundary (a multiple of pi/2) along the arc, or its end.
+    const double a = a0 + dir * prev;
+    const double k = dir > 0 ? std::floor(a / (M_PI / 2) + 1e-9) + 1 : std::ceil(a / (M_PI / 2) - 1e-9) - 1;
+    next = std::min(sweep, dir * (k * M_PI / 2 - a0));
+    const double b = a0 + dir * next;
+    travel += std::fabs(std::cos(b) - std::cos(a)) + std::fabs(std::sin(b) - std::sin(a));
+  }
+  return static_cast<std::uint64_t>(std::llround(R * travel));
+}
+
+// The pulses of a line, exactly; of an arc, an estimate.
 std::uint64_t expected_pulses(const Move& m) {
   auto mag = [](std::int64_t v) { return static_cast<std::uint64_t>(v < 0 ? -v : v); };
-  return m.is_arc() ? 0 : mag(m.xe) + mag(m.ye);
+  return m.is_arc() ? arc_pulses_estimate(m) : mag(m.xe) + mag(m.ye);
 }
 
 // What follows the steps: the end of the steps line, the rest of the JSON
@@ -198,6 +220,7 @@ int run_move(const Args& a, const Move& m) {
   }
   Progress progress(progress_wanted(a), describe(m) + " [engine " + engine_name + "]", "pulses");
   const std::uint64_t total = expected_pulses(m);
+  if (m.is_arc()) progress.totals_are_estimates();
   Output out(out_path);  // svg: opened here to refuse an unwritable path before the run
   if (format == "json")
     std::fprintf(out.file(), "{\"engine\": \"%s\", \"move\": \"%s\", \"pulses\": [", engine_name.c_str(),

@@ -31,8 +31,9 @@ void Progress::show(std::uint64_t done, std::uint64_t total) {
   const double s = duration<double>(now - start_).count();
   int n;
   if (total)
-    n = std::snprintf(line, sizeof line, "%s: %llu of %llu %s (%.1f%%), %.0f s", what_.c_str(),
-                      static_cast<unsigned long long>(done), static_cast<unsigned long long>(total), unit_.c_str(),
+    n = std::snprintf(line, sizeof line, "%s: %llu of %s%llu %s (%.1f%%), %.0f s", what_.c_str(),
+                      static_cast<unsigned long long>(done), estimate_ ? "~" : "",
+                      static_cast<unsigned long long>(total), unit_.c_str(),
                       100.0 * static_cast<double>(done) / static_cast<double>(total), s);
   else
     n = std::snprintf(line, sizeof line, "%s: %llu %s, %.0f s", what_.c_str(), static_cast<unsigned long long>(done),

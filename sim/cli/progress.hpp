@@ -31,6 +31,8 @@ class Progress {
   void update(std::uint64_t done, std::uint64_t total) {
     if (enabled_ && (++calls_ & 4095) == 0) show(done, total);
   }
+  // The totals passed to update() are estimates (shown as "~N").
+  void totals_are_estimates() { estimate_ = true; }
   // Wipes the line (also done by the destructor).
   void finish();
 
@@ -38,6 +40,7 @@ class Progress {
   void show(std::uint64_t done, std::uint64_t total);
 
   bool enabled_;
+  bool estimate_ = false;
   std::chrono::steady_clock::duration delay_;  // nothing shown before
   std::string what_, unit_;
   std::uint64_t calls_ = 0;

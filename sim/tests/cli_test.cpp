@@ -208,6 +208,15 @@ TEST(CliProgress, ForcedShowsPulsesOnStderrAndWipesTheLine) {
   EXPECT_EQ(o.err.find('\n'), std::string::npos);
 }
 
+// An arc's total is an estimate from the ideal arc: a full circle of radius
+// R moves each axis 4R (geometry), exactly what the pulses add up to here.
+TEST(CliProgress, ArcShowsAnEstimatedTotal) {
+  const ProcessResult o = contour("arc 100000 0 100000 0 --ccw --progress");
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.err.find(" of ~800000 pulses ("), std::string::npos) << o.err;
+  EXPECT_NE(o.out.find("pulses:        800000 (X 400000, Y 400000)"), std::string::npos) << o.out;
+}
+
 TEST(CliProgress, OffWhenNotATerminalOrAskedOff) {
   EXPECT_EQ(contour("line 20000 20000").err, "");
   EXPECT_EQ(contour("line 20000 20000 --no-progress").err, "");
