@@ -55,13 +55,17 @@ std::vector<std::uint8_t> read_file(const std::string& path) {
 }
 
 // Forwards every call to the machine it wraps and reports the T-states
-// after each step, for the progress line of a CP/M run.
+// after each step, for the progress line. With `drop_outs` (a CP/M run,
+// whose port writes are not printed) the bus's log of port writes is
+// emptied before each step, so that it does not grow with the run.
 class WatchedMachine final : public i8085::Machine {
  public:
-  WatchedMachine(i8085::Machine& m, Progress& p, std::uint64_t limit) : m_(m), p_(p), limit_(limit) {}
+  WatchedMachine(i8085::Machine& m, Progress& p, std::uint64_t limit, i8085::RamBus* drop_outs)
+      : m_(m), p_(p), limit_(limit), drop_outs_(drop_outs) {}
   i8085::Mode mode() const override { return m_.mode(); }
   void reset() override { m_.reset(); }
   int step() override {
+    if (drop_outs_) drop_outs_->outs.clear();
     const int t = m_.step();
     p_.update(m_.tstates(), limit_);
     return t;
@@ -82,6 +86,7 @@ class WatchedMachine final : public i8085::Machine {
   i8085::Machine& m_;
   Progress& p_;
   std::uint64_t limit_;
+  i8085::RamBus* drop_outs_;
 };
 
 // A bare run (i8085::run_bare's loop) that prints each OUT as it happens and
@@ -176,7 +181,7 @@ int cmd_sim85(const std::vector<std::string>& argv) {
 
   std::unique_ptr<i8085::Machine> machine = it->second.make(bus, mode);
   Progress progress(show_progress, "sim85 " + path, "T-states");
-  WatchedMachine watched(*machine, progress, opt.max_tstates);
+  WatchedMachine watched(*machine, progress, opt.max_tstates, cpm ? &bus : nullptr);
   i8085::RunResult res;
   ConsoleBuf console_buf;
   std::ostream console(&console_buf);

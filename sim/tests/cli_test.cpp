@@ -245,6 +245,16 @@ TEST(CliSim85, OutputIsWrittenAsTheProgramRuns) {
   EXPECT_NE(o.err.find("past the limit 1000"), std::string::npos) << o.err;
 }
 
+// OUT 10h; JMP 0100h as a CP/M program: 10 000 000 port writes in 2e8
+// T-states, none printed and none kept (160 MB if each were logged).
+TEST(CliSim85, CpmRunDoesNotGrowWithItsPortWrites) {
+  const std::string bin = write_binary("cpm_out_loop.bin", std::string("\xD3\x10\xC3\x00\x01", 5));
+  const ProcessResult o = contour("sim85 --cpm " + bin + " --max-tstates 200000000");
+  EXPECT_EQ(o.status, 1);
+  EXPECT_NE(o.err.find("past the limit 200000000"), std::string::npos) << o.err;
+  EXPECT_LT(o.max_rss_kb, kStreamRssLimitKb);
+}
+
 TEST(CliSim85, ForcedProgressCountsTStatesAgainstTheLimit) {
   const std::string bin = write_binary("jmp_progress.bin", std::string("\xC3\x00\x00", 3));
   const ProcessResult o = contour("sim85 " + bin + " --max-tstates 20000000 --progress");
