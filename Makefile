@@ -9,6 +9,7 @@
 #   make formal  the formal proofs and their mutants (ctest -L formal)
 #   make mutants planted bugs in model, RTL, 8085 program: each must be KILLED
 #   make coverage line and toggle coverage of the interp_core regression
+#   make install PREFIX=DIR  contour and contour-cosim into DIR/bin (default /usr/local)
 #   make deps    install what is missing (apt-get, npm ci); run by the above
 #   make clean   remove build/
 #
@@ -26,7 +27,7 @@ COV_FILTER ?= *
 all: build
 
 help:
-	@sed -n '3,16p' Makefile
+	@sed -n '3,17p' Makefile
 
 deps:
 	@.ci/install-deps
@@ -83,6 +84,13 @@ formal: configure
 .PHONY: mutants
 mutants: configure
 	@BUILD=$(BUILD) JOBS=$(JOBS) tb/mutants/run.sh
+
+# The programs need nothing from the build tree once installed (the 8085
+# program is embedded); ctest cli.install_relocated checks it.
+PREFIX ?= /usr/local
+.PHONY: install
+install: build
+	@$(CMAKE) --install $(BUILD) --prefix $(PREFIX)
 
 clean:
 	rm -rf $(BUILD)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -42,6 +43,9 @@ struct RunResult {
   State initial_state;
 };
 
+// Receives each step of a streamed run as the engine makes it.
+using StepFn = std::function<void(const StepRecord&)>;
+
 // Runs a move to its end, one command pulse at a time.
 class Engine {
  public:
@@ -49,6 +53,16 @@ class Engine {
   virtual std::string name() const = 0;
   // Throws InputError if the move is outside the accepted domain.
   virtual RunResult run(const Move& m) = 0;
+  // The same run, each step handed to `on_step` and none kept: the result
+  // has the initial and final states and no steps, so memory does not grow
+  // with the move. This default runs run() and replays it; the engines
+  // override it with a loop that keeps nothing.
+  virtual RunResult stream(const Move& m, const StepFn& on_step) {
+    RunResult r = run(m);
+    for (const auto& s : r.steps) on_step(s);
+    r.steps = {};
+    return r;
+  }
 };
 
 // Throws InputError unless `m` is accepted at width W.
@@ -58,13 +72,17 @@ void validate(const Move& m) {
   else Linear<W>::validate(m.xe, m.ye);
 }
 
-// The golden model as an engine at width W.
+// The golden model as an engine at width W. With `on_step` each step goes
+// there and none is kept.
 template <unsigned W = 24>
-RunResult run_model(const Move& m) {
+RunResult run_model(const Move& m, const StepFn& on_step = {}) {
   RunResult r;
-  auto drive = [&r](auto& interp) {
+  auto drive = [&r, &on_step](auto& interp) {
     r.initial_state = interp.state();
-    while (auto p = interp.step()) r.steps.push_back({*p, interp.state()});
+    while (auto p = interp.step()) {
+      if (on_step) on_step({*p, interp.state()});
+      else r.steps.push_back({*p, interp.state()});
+    }
     r.final_state = interp.state();
   };
   if (m.is_arc()) {
@@ -81,6 +99,7 @@ class ModelEngine final : public Engine {
  public:
   std::string name() const override { return "model"; }
   RunResult run(const Move& m) override { return run_model<24>(m); }
+  RunResult stream(const Move& m, const StepFn& on_step) override { return run_model<24>(m, on_step); }
 };
 
 // Distance in pulses of (x, y) from the ideal contour: for a line the

@@ -1,8 +1,8 @@
 #include "args.hpp"
 
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
+#include <cctype>
+
+#include "numbers.hpp"
 
 namespace contour::cli {
 
@@ -27,18 +27,21 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& fl
       continue;
     }
     // "--name", "--name=value", or a one-letter "-o" spelled as in `options`.
-    std::string name = a.rfind("--", 0) == 0 ? a.substr(2) : a.substr(1);
+    // Messages name the option as it was spelled ("-o", "--output").
+    const std::size_t dashes = a.rfind("--", 0) == 0 ? 2 : 1;
+    std::string name = a.substr(dashes);
     std::optional<std::string> value;
     if (auto eq = name.find('='); eq != std::string::npos) {
       value = name.substr(eq + 1);
       name = name.substr(0, eq);
     }
+    const std::string spelled = a.substr(0, dashes) + name;
     if (flags.count(name)) {
-      if (value) throw UsageError("option --" + name + " takes no value");
+      if (value) throw UsageError("option " + spelled + " takes no value");
       flags_.insert(name);
     } else if (options.count(name)) {
       if (!value) {
-        if (i + 1 >= argv.size()) throw UsageError("option --" + name + " needs a value");
+        if (i + 1 >= argv.size()) throw UsageError("option " + spelled + " needs a value");
         value = argv[++i];
       }
       options_[name] = *value;
@@ -66,24 +69,21 @@ void Args::expect_positional(const std::vector<std::string>& names) const {
 }
 
 std::int64_t parse_int(const std::string& text, const std::string& what) {
-  errno = 0;
-  char* end = nullptr;
-  const long long v = std::strtoll(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0') throw UsageError(what + ": '" + text + "' is not an integer");
-  if (errno == ERANGE) throw UsageError(what + ": '" + text + "' is out of range");
-  return static_cast<std::int64_t>(v);
+  std::int64_t v = 0;
+  switch (read_int(text, v)) {
+    case IntRead::Ok:
+      return v;
+    case IntRead::OutOfRange:
+      throw UsageError(what + ": '" + text + "' is out of range");
+    case IntRead::NotInteger:
+      break;
+  }
+  throw UsageError(what + ": '" + text + "' is not an integer (decimal digits, optional leading '-')");
 }
 
 double parse_real(const std::string& text, const std::string& what) {
-  char* end = nullptr;
-  double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || end == text.c_str()) throw UsageError(what + ": '" + text + "' is not a number");
-  std::string suffix(end);
-  if (suffix == "k") v *= 1e3;
-  else if (suffix == "M") v *= 1e6;
-  else if (!suffix.empty()) throw UsageError(what + ": '" + text + "' is not a number");
-  if (!std::isfinite(v)) throw UsageError(what + ": '" + text + "' is not finite");
-  return v;
+  if (const auto v = read_real(text)) return *v;
+  throw UsageError(what + ": '" + text + "' is not a number (decimal, optional k or M suffix: 1.5, 250k)");
 }
 
 }  // namespace contour::cli

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "args.hpp"
+#include "numbers.hpp"
 #include "registry.hpp"
 
 namespace contour::cli {
@@ -43,7 +44,10 @@ void print_usage(std::FILE* out) {
                "Verilog core and 8085 program, compared pulse by pulse.\n\ncommands:\n");
   for (const auto& [name, cmd] : contour::cli::commands())
     std::fprintf(out, "  %-10s %s\n", name.c_str(), cmd.summary.c_str());
-  std::fprintf(out, "\n`contour COMMAND --help` describes each.\n");
+  std::fprintf(out,
+               "\n`contour COMMAND --help` describes each; `contour --version` prints the version.\n"
+               "Bad input: one line on stderr naming it, exit status 2; a failed check: exit 1.\n\n%s",
+               contour::cli::kNumberRules);
 }
 
 }  // namespace
@@ -57,6 +61,10 @@ int main(int argc, char** argv) {
   const std::string name = argv[1];
   if (name == "--help" || name == "-h" || name == "help") {
     print_usage(stdout);
+    return 0;
+  }
+  if (name == "--version") {
+    std::printf("contour %s\n", CONTOUR_VERSION);
     return 0;
   }
   auto it = commands().find(name);

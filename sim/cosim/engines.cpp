@@ -11,6 +11,7 @@
 #include "Vcosim_interp.h"
 #include "interp_regs.h"
 #include "sw8085/interp/host.hpp"
+#include "sim/cli/numbers.hpp"
 #include "sw8085/interp/mailbox.hpp"
 
 using sc_core::sc_time;
@@ -87,11 +88,10 @@ Fault parse_fault(const std::string& text) {
   bool known = false;
   for (const auto& e : engine_names()) known |= e == f.engine;
   if (!known) throw std::invalid_argument("--inject '" + text + "': unknown engine '" + f.engine + "'");
-  char* end = nullptr;
-  const unsigned long long v = std::strtoull(n.c_str(), &end, 10);
-  if (n.empty() || *end != '\0' || v == 0)
+  std::int64_t v = 0;  // the CLI's number rules (sim/cli/numbers.hpp): "-1" is no pulse number
+  if (cli::read_int(n, v) != cli::IntRead::Ok || v < 1)
     throw std::invalid_argument("--inject '" + text + "': pulse number '" + n + "' is not a positive integer");
-  f.at = v;
+  f.at = static_cast<std::uint64_t>(v);
   return f;
 }
 

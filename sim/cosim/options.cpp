@@ -3,8 +3,11 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
+
+#include "sim/cli/numbers.hpp"
 
 namespace contour::cosim {
 
@@ -19,11 +22,23 @@ std::vector<std::string> split(const std::string& s) {
   return out;
 }
 
-std::uint32_t parse_clocks(const std::string& text, const std::string& what) {
-  char* end = nullptr;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || v < 1 || v > 65535)
-    throw UsageError(what + " '" + text + "': expected clocks 1..65535");
+// Clocks of the core (1..65535), or a duration with its unit ("2us",
+// "1500ns") that must be a whole number of clocks at `core_hz`.
+std::uint32_t parse_clocks(const std::string& text, const std::string& what, double core_hz) {
+  std::int64_t v = 0;
+  if (const auto ns = cli::read_duration_ns(text)) {
+    const double clocks = *ns * core_hz / 1e9;
+    if (std::fabs(clocks - std::round(clocks)) > 1e-6) {
+      char clk[32];
+      std::snprintf(clk, sizeof clk, "%g ns", 1e9 / core_hz);
+      throw UsageError(what + " '" + text + "' is not a whole number of core clocks (" + clk + ")");
+    }
+    v = static_cast<std::int64_t>(std::llround(clocks));
+  } else if (cli::read_int(text, v) != cli::IntRead::Ok) {
+    v = -1;
+  }
+  if (v < 1 || v > 65535)
+    throw UsageError(what + " '" + text + "': expected clocks 1..65535 or a duration (2us, 1500ns) of 1..65535 clocks");
   return static_cast<std::uint32_t>(v);
 }
 
@@ -31,16 +46,9 @@ std::uint32_t parse_clocks(const std::string& text, const std::string& what) {
 
 double parse_rate(const std::string& text, const std::string& what) {
   if (text.empty()) throw UsageError(what + ": empty rate");
-  double mult = 1;
-  std::string num = text;
-  const char last = text.back();
-  if (last == 'k' || last == 'K') mult = 1e3, num.pop_back();
-  else if (last == 'M') mult = 1e6, num.pop_back();
-  char* end = nullptr;
-  const double v = std::strtod(num.c_str(), &end);
-  if (num.empty() || *end != '\0' || !std::isfinite(v))
-    throw UsageError(what + " '" + text + "' is not a rate (examples: 4000, 3.5k, 250k, 1M)");
-  const double r = v * mult;
+  const auto v = cli::read_real(text);  // the CLI's number rules (sim/cli/numbers.hpp)
+  if (!v) throw UsageError(what + " '" + text + "' is not a rate (examples: 4000, 3.5k, 250k, 1M; decimal only)");
+  const double r = *v;
   if (r < 1 || r > 50e6) throw UsageError(what + " '" + text + "' is outside 1 .. 50M pulses/s");
   return r;
 }
@@ -48,10 +56,12 @@ double parse_rate(const std::string& text, const std::string& what) {
 std::string usage() {
   return "usage: contour cosim --suite paper|smoke|full[,...] (--rate R[,R...] | --sweep) [--report DIR] [--trace]\n"
          "         [--engines model,core,iss,cpu] [--case NAME[,NAME...]] [--progress|--no-progress]\n"
-         "         [--free-clock] [--step-len N] [--step-space N] [--inject ENGINE:drop|swap|flip:N]\n"
+         "         [--free-clock] [--step-len N|T] [--step-space N|T] [--inject ENGINE:drop|swap|flip:N]\n"
+         "  --step-len, --step-space: N core clocks, or a duration T with its unit (2us, 1500ns)\n"
          "  Co-simulates the golden model, the Verilog core (core), the 8085 program on the ISS (iss)\n"
          "  and on the Verilog 8085 board (cpu) on the same command pulse train; exit 0 only when\n"
-         "  every required equivalence holds (docs/cosim.md).\n";
+         "  every required equivalence holds (docs/cosim.md).\n" +
+         std::string(cli::kNumberRules);
 }
 
 namespace {
@@ -100,8 +110,9 @@ void parse_suite(Parse& p) {
 
 void parse_rates(Parse& p) {
   const std::string v = p.value();
-  for (const auto& r : split(v)) p.o.rates.push_back(parse_rate(r, "--rate"));
-  if (p.o.rates.empty()) throw UsageError("--rate: empty");
+  const auto items = cli::read_list(v);
+  if (!items) throw UsageError("--rate '" + v + "': an empty item in the list");
+  for (const auto& r : *items) p.o.rates.push_back(parse_rate(r, "--rate"));
   p.cmd.push_back("--rate " + v);
 }
 
@@ -155,7 +166,7 @@ void parse_progress(Parse& p) {
 }
 
 void parse_step_clocks(Parse& p, std::uint32_t& clocks) {
-  clocks = parse_clocks(p.value(), p.name);
+  clocks = parse_clocks(p.value(), p.name, p.o.core_hz);
   p.cmd.push_back(p.name + " " + std::to_string(clocks));
 }
 

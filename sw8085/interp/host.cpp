@@ -6,15 +6,14 @@
 #include <stdexcept>
 
 #include "i8085/hex.hpp"
-#include "sw8085_paths.hpp"  // generated: kHexDir
 
 namespace contour::sw8085 {
 
-Program Program::load(const std::string& hex_path, const std::string& lst_path) {
+Program Program::from_text(const std::string& hex_text, const std::string& lst_text, const std::string& hex_name,
+                           const std::string& lst_name) {
   Program p;
-  i8085::read_hex_file(hex_path).load_into(p.image);
-  std::ifstream lst(lst_path);
-  if (!lst) throw std::runtime_error(lst_path + ": cannot read the listing");
+  i8085::parse_hex(hex_text, hex_name).load_into(p.image);
+  std::istringstream lst(lst_text);
   // Symbol table lines: "NAME:<spaces>HHHH DEFINED AT LINE n".
   std::string line;
   while (std::getline(lst, line)) {
@@ -31,12 +30,28 @@ Program Program::load(const std::string& hex_path, const std::string& lst_path) 
                                               : -static_cast<long>(std::stoul(hex.substr(minus + 1), nullptr, 16));
     p.symbols[name] = static_cast<std::uint16_t>(v);
   }
-  if (p.symbols.empty()) throw std::runtime_error(lst_path + ": no symbol table in the listing");
+  if (p.symbols.empty()) throw std::runtime_error(lst_name + ": no symbol table in the listing");
   return p;
 }
 
+Program Program::load(const std::string& hex_path, const std::string& lst_path) {
+  auto slurp = [](const std::string& path, const char* what) {
+    std::ifstream f(path);
+    if (!f) throw std::runtime_error(path + ": cannot read the " + what);
+    std::stringstream s;
+    s << f.rdbuf();
+    return s.str();
+  };
+  return from_text(slurp(hex_path, "program"), slurp(lst_path, "listing"), hex_path, lst_path);
+}
+
+// The text of interp.hex and interp.lst, embedded at build time
+// (sw8085/interp/embed_image.cmake).
+extern const char* const kEmbeddedHex;
+extern const char* const kEmbeddedLst;
+
 const Program& Program::builtin() {
-  static const Program p = load(std::string(kHexDir) + "/interp/interp.hex", std::string(kHexDir) + "/interp/interp.lst");
+  static const Program p = from_text(kEmbeddedHex, kEmbeddedLst, "interp.hex (embedded)", "interp.lst (embedded)");
   return p;
 }
 
@@ -201,7 +216,8 @@ std::uint64_t pulse_bound(const Move& m) {
 
 }  // namespace
 
-RunResult Host::run(const Move& m, std::vector<CommandResult>* commands, std::uint64_t max_pulses) {
+RunResult Host::run(const Move& m, std::vector<CommandResult>* commands, std::uint64_t max_pulses,
+                    const StepFn& on_step) {
   validate<24>(m);
   RunResult r;
   if (!m.is_arc() && m.xe == 0 && m.ye == 0) {
@@ -220,11 +236,13 @@ RunResult Host::run(const Move& m, std::vector<CommandResult>* commands, std::ui
       throw std::logic_error("sw8085: command pulse " + std::to_string(n + 1) + " of " + describe(m) +
                              " gave no output pulse");
     ++n;
-    r.steps.push_back({*c.pulse, state(sm, n)});
+    r.final_state = state(sm, n);
+    if (on_step) on_step({*c.pulse, r.final_state});
+    else r.steps.push_back({*c.pulse, r.final_state});
     if (commands) commands->push_back(c);
     if (n > bound) throw std::logic_error("sw8085: " + describe(m) + " did not end after " + std::to_string(n) + " pulses");
   }
-  r.final_state = r.steps.empty() ? r.initial_state : r.steps.back().state;
+  if (n == 0) r.final_state = r.initial_state;
   return r;
 }
 
@@ -303,10 +321,12 @@ void Host::settle() {
   }
 }
 
-RunResult ProgramEngine::run(const Move& m) {
+RunResult ProgramEngine::run(const Move& m) { return stream(m, {}); }
+
+RunResult ProgramEngine::stream(const Move& m, const StepFn& on_step) {
   validate<24>(m);
   Host host(Program::builtin(), factory_);
-  return host.run(m);
+  return host.run(m, nullptr, 0, on_step);
 }
 
 }  // namespace contour::sw8085

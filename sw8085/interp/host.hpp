@@ -26,7 +26,11 @@ struct Program {
 
   // Throws std::runtime_error naming the file if it cannot be read or parsed.
   static Program load(const std::string& hex_path, const std::string& lst_path);
-  // The build tree's sw8085/interp/interp.hex and .lst.
+  // The same from the files' text; the names are for messages.
+  static Program from_text(const std::string& hex_text, const std::string& lst_text, const std::string& hex_name,
+                           const std::string& lst_name);
+  // sw8085/interp/interp.hex and .lst as assembled by the build, embedded in
+  // the binary (no file is read: an installed `contour` needs no build tree).
   static const Program& builtin();
   std::uint16_t symbol(const std::string& name) const;
 };
@@ -85,7 +89,9 @@ class Host {
   // Runs a move to its end, one command pulse at a time (the Engine seam);
   // `commands` gets the T-states and instructions of each.
   // A run longer than `max_pulses` (0: a bound from the move's size) throws.
-  RunResult run(const Move& m, std::vector<CommandResult>* commands = nullptr, std::uint64_t max_pulses = 0);
+  // With `on_step` each step goes there and none is kept in the result.
+  RunResult run(const Move& m, std::vector<CommandResult>* commands = nullptr, std::uint64_t max_pulses = 0,
+                const StepFn& on_step = {});
 
   // Command pulses every `period` T-states (the first one `period` after
   // the call) until `moves` are all done, the host queueing each as soon as
@@ -124,6 +130,7 @@ class ProgramEngine final : public Engine {
   ProgramEngine(std::string name, i8085::MachineFactory factory) : name_(std::move(name)), factory_(std::move(factory)) {}
   std::string name() const override { return name_; }
   RunResult run(const Move& m) override;
+  RunResult stream(const Move& m, const StepFn& on_step) override;
 
  private:
   std::string name_;

@@ -14,9 +14,11 @@ struct CoreEngine::Impl {
 CoreEngine::CoreEngine() : impl_(std::make_unique<Impl>()) {}
 CoreEngine::~CoreEngine() = default;
 
-RunResult CoreEngine::run(const Move& m) {
+RunResult CoreEngine::run(const Move& m) { return stream(m, {}); }
+
+RunResult CoreEngine::stream(const Move& m, const StepFn& on_step) {
   const Block b = make_block<24>(m);
-  RunResult r = impl_->h.run(b, pulse_bound(m));
+  RunResult r = impl_->h.run(b, pulse_bound(m), on_step);
   if (!r.final_state.done)
     throw std::runtime_error("core: the core did not end '" + describe(m) + "' within " +
                              std::to_string(pulse_bound(m)) + " pulses");

@@ -18,6 +18,7 @@ class CoreEngine final : public Engine {
   // Throws InputError outside the accepted domain (the host's validation),
   // std::runtime_error if the core does not end the move.
   RunResult run(const Move& m) override;
+  RunResult stream(const Move& m, const StepFn& on_step) override;
 
  private:
   struct Impl;

@@ -94,8 +94,9 @@ class CoreHarness : public tb::Harness<V> {
   }
 
   // Runs one block to its end with the command held high: returns the
-  // initial state and every pulse. Stops after `max_pulses` (a runaway).
-  RunResult run(const Block& b, std::uint64_t max_pulses) {
+  // initial state and every pulse (with `on_step`: hands each pulse there
+  // and keeps none). Stops after `max_pulses` (a runaway).
+  RunResult run(const Block& b, std::uint64_t max_pulses, const StepFn& on_step = {}) {
     RunResult r;
     if (!push(b)) throw std::runtime_error("rtl: queue full");
     drain_queue();
@@ -107,7 +108,8 @@ class CoreHarness : public tb::Harness<V> {
       tick();
       if (auto o = pulse()) {
         o->state.pulses = ++n;
-        r.steps.push_back({o->pulse, o->state});
+        if (on_step) on_step({o->pulse, o->state});
+        else r.steps.push_back({o->pulse, o->state});
         last = o->last;
       } else if (!top().o_busy) {
         break;  // done without a last pulse: the checker reports it
