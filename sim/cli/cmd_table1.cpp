@@ -326,7 +326,8 @@ std::string about(double seconds) {
 }
 
 // The ISS's rows (the result on engine iss, the plan on any other), then the
-// slow engine's. The first line on stderr says how long it will take.
+// slow engine's. With progress on, a first line on stderr says how long it
+// will take (so a pipe or a log gets only the table).
 Rows run_table1(const Plan& plan, Progress& progress) {
   const auto iss = counted(i8085::make_iss, progress);
   sw8085::Program::builtin();  // loaded before the clock starts
@@ -348,7 +349,7 @@ Rows run_table1(const Plan& plan, Progress& progress) {
   if (plan.engine != "iss")
     first << ", then " << engine_t / 1e6 << " M on engine " << plan.engine << " at " << std::setprecision(1)
           << engine_tps / 1e6 << " M T-states/s";
-  say(progress, first.str());
+  if (plan.progress) say(progress, first.str());  // a terminal, or --progress
   progress.phase("command period bisected on the ISS", static_cast<std::uint64_t>(bisect_t));
   r.lin.period_min = bisect_period(standard_lines(), iss, 20, first_hi(r.lin));
   r.circ.period_min = bisect_period(standard_arcs(), iss, 20, first_hi(r.circ));

@@ -25,7 +25,7 @@ file(WRITE ${PREFIX}/hlt.bin "v")  # 76h: HLT
 foreach(engine iss cpu)
   expect("^T-states: 5\n$" sim85 ${PREFIX}/hlt.bin --engine ${engine})
 endforeach()
-expect("worst pulse: linear" table1)
+expect("The paper.s measure: the longest routine" table1 --no-progress)
 expect("^100.00% PASS 8 PASSED, 0 FAILED\n" cosim --suite paper --rate 4k --engines model,core,iss,cpu --no-progress)
 if(failed)
   message(FATAL_ERROR "the installed contour failed")
