@@ -131,18 +131,39 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
   put24(mb, at(base, arc::kCy), static_cast<std::uint32_t>(cy));
   put24(mb, at(base, arc::kEy), static_cast<std::uint32_t>(ey));
   mb[at(base, arc::kQ)] = static_cast<std::uint8_t>(q);
-  mb[at(base, arc::kK)] = static_cast<std::uint8_t>(plan.crossings);
-  mb[at(base, arc::kQstep)] = m.sense == Sense::CCW ? 1 : 3;
-  for (int qq = 0; qq < 4; ++qq) {
+  mb[at(base, arc::kK)] = at(base, arc::kTable + 4 * plan.crossings);
+  auto patterns = [&](int qq) {
     const bool qix = inward_is_x(qq, m.sense);
     const Axis in = qix ? Axis::X : Axis::Y, out = qix ? Axis::Y : Axis::X;
     const int sin = in == Axis::X ? quadrant_sign_x(qq) : quadrant_sign_y(qq);
     const int sout = out == Axis::X ? quadrant_sign_x(qq) : quadrant_sign_y(qq);
-    mb[at(base, arc::kPatterns + 2 * qq)] = pattern(in, -sin);
-    mb[at(base, arc::kPatterns + 2 * qq + 1)] = pattern(out, sout);
+    return std::pair<std::uint8_t, std::uint8_t>{pattern(in, -sin), pattern(out, sout)};
+  };
+  mb[at(base, arc::kPin)] = patterns(q).first;
+  mb[at(base, arc::kPout)] = patterns(q).second;
+  // The crossing table: the quadrant entered when k becomes k'.
+  const int step = m.sense == Sense::CCW ? 1 : 3;
+  for (int kn = plan.crossings - 1; kn >= 0; --kn) {
+    const int qn = (q + step * (plan.crossings - kn)) & 3;
+    const bool nix = inward_is_x(qn, m.sense);
+    std::uint8_t code;
+    if (kn > 0) {
+      code = codes.code(nix ? "AIX" : "AIY", 0);
+    } else {
+      // The new outward axis is at 0: at its end iff its end is 0.
+      const bool out_done = (nix ? ey : ex) == 0;
+      code = codes.code(out_done ? (nix ? "FIXP" : "FIYP") : (nix ? "EIX" : "EIY"), 0);
+      const std::uint8_t code_in_done = out_done ? codes.fin_p[0] : codes.code(nix ? "FOYP" : "FOXP", 0);
+      mb[at(base, arc::kDelta)] = static_cast<std::uint8_t>(code_in_done - code);
+      mb[at(base, arc::kDoneB)] = out_done ? 1 : 0;
+      code |= 0x80;
+    }
+    const std::uint8_t e = at(base, arc::kTable + 4 * kn);
+    mb[e] = code;
+    mb[static_cast<std::uint8_t>(e + 1)] = patterns(qn).first;
+    mb[static_cast<std::uint8_t>(e + 2)] = patterns(qn).second;
+    mb[static_cast<std::uint8_t>(e + 3)] = static_cast<std::uint8_t>(qn);
   }
-  mb[at(base, arc::kPin)] = mb[at(base, arc::kPatterns + 2 * q)];
-  mb[at(base, arc::kPout)] = mb[at(base, arc::kPatterns + 2 * q + 1)];
   return sm;
 }
 
@@ -183,7 +204,9 @@ State decode(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Co
   const int q = mb[at(base, arc::kQ)];
   if (q > 3) throw bad("quadrant " + std::to_string(q) + " out of range");
   s.quadrant = static_cast<std::uint8_t>(q);
-  s.crossings = mb[at(base, arc::kK)];
+  const int k4 = static_cast<std::uint8_t>(mb[at(base, arc::kK)] - base - arc::kTable);
+  if (k4 % 4 != 0 || k4 > 16) throw bad("k pointer " + std::to_string(mb[at(base, arc::kK)]) + " is no table entry");
+  s.crossings = static_cast<std::uint8_t>(k4 / 4);
   s.x = quadrant_sign_x(q) * std::int64_t{get24(mb, at(base, arc::kCx))};
   s.y = quadrant_sign_y(q) * std::int64_t{get24(mb, at(base, arc::kCy))};
   return s;

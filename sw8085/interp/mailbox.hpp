@@ -40,7 +40,7 @@ inline constexpr std::uint8_t kReady = 0x06;      // kReadyMagic once initialise
 inline constexpr std::uint8_t kIdleCount = 0x08;  // 2 bytes: command pulses served with no move
 inline constexpr std::uint8_t kLayout = 0x0A;     // kLayoutVersion
 inline constexpr std::uint8_t kReadyMagic = 0x5A;
-inline constexpr std::uint8_t kLayoutVersion = 2;
+inline constexpr std::uint8_t kLayoutVersion = 3;
 
 // Slots: a slot spans base-4 .. base+0x3B.
 inline constexpr std::array<std::uint8_t, 2> kSlots = {0x80, 0xC0};
@@ -69,8 +69,17 @@ namespace arc {
 inline constexpr int kPout = -2, kPin = -1;
 inline constexpr int kD = 0x01;    // D', 3 bytes; its sign and p (D = 2*D' + p) from MODE
 inline constexpr int kCx = 0x05, kEx = 0x08, kCy = 0x0B, kEy = 0x0E;  // 3 bytes each
-inline constexpr int kQ = 0x11, kK = 0x12, kQstep = 0x13;
-inline constexpr int kPatterns = 0x14;  // PIN, POUT of quadrants 0..3
+inline constexpr int kQ = -3;
+// k, stored as the mailbox address of its crossing-table entry:
+// base + kTable + 4k (mod 256).
+inline constexpr int kK = 0x12;
+// The crossing table: for k' = 0..3, the entry of the quadrant entered when
+// k becomes k': CODE (the new family's code for p = 0, D >= 0; bit 7 set
+// for k' = 0), PIN, POUT, q.
+inline constexpr int kTable = 0x14;
+// For k' = 0, if the new inward axis is at its end: MODE += kDelta, and
+// kDoneB says whether the move is then done.
+inline constexpr int kDelta = 0x24, kDoneB = 0x25;
 }  // namespace arc
 
 // The MODE codes: assigned by the assembler (C_xxx in interp.a80), read from
