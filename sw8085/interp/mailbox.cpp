@@ -150,13 +150,16 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
     if (kn > 0) {
       code = codes.code(nix ? "AIX" : "AIY", 0);
     } else {
-      // The new outward axis is at 0: at its end iff its end is 0.
+      // The end quadrant: the new outward axis is at 0, the new inward one
+      // enters at ceil(sqrt(R^2 - 1)) (docs/sw8085.md, "Crossings"), so
+      // which axes are at their end is known now.
+      const std::int64_t entry = isqrt_ceil(plan.r2 - 1);
       const bool out_done = (nix ? ey : ex) == 0;
-      code = codes.code(out_done ? (nix ? "FIXP" : "FIYP") : (nix ? "EIX" : "EIY"), 0);
-      const std::uint8_t code_in_done = out_done ? codes.fin_p[0] : codes.code(nix ? "FOYP" : "FOXP", 0);
-      mb[at(base, arc::kDelta)] = static_cast<std::uint8_t>(code_in_done - code);
-      mb[at(base, arc::kDoneB)] = out_done ? 1 : 0;
-      code |= 0x80;
+      const bool in_done = (nix ? ex : ey) == entry;
+      if (in_done && out_done) code = codes.fin_p[0] | 0x80;  // the move ends on entering
+      else if (in_done) code = codes.code(nix ? "FOYP" : "FOXP", 0);
+      else if (out_done) code = codes.code(nix ? "FIXP" : "FIYP", 0);
+      else code = codes.code(nix ? "EIX" : "EIY", 0);
     }
     const std::uint8_t e = at(base, arc::kTable + 4 * kn);
     mb[e] = code;

@@ -75,11 +75,8 @@ inline constexpr int kQ = -3;
 inline constexpr int kK = 0x12;
 // The crossing table: for k' = 0..3, the entry of the quadrant entered when
 // k becomes k': CODE (the new family's code for p = 0, D >= 0; bit 7 set
-// for k' = 0), PIN, POUT, q.
+// if the move ends on entering that quadrant), PIN, POUT, q.
 inline constexpr int kTable = 0x14;
-// For k' = 0, if the new inward axis is at its end: MODE += kDelta, and
-// kDoneB says whether the move is then done.
-inline constexpr int kDelta = 0x24, kDoneB = 0x25;
 }  // namespace arc
 
 // The MODE codes: assigned by the assembler (C_xxx in interp.a80), read from

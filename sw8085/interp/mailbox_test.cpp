@@ -38,8 +38,7 @@ TEST(Mailbox, OffsetsAreTheProgramsEqus) {
       {"L_PATX", line::kPatX}, {"L_PATY", line::kPatY}, {"L_AXES", line::kAxes}, {"L_NB", line::kNotB},
       {"L_A", line::kA},
       {"A_D0", arc::kD}, {"A_CX", arc::kCx}, {"A_EX", arc::kEx}, {"A_CY", arc::kCy}, {"A_EY", arc::kEy},
-      {"A_Q", arc::kQ}, {"A_K", arc::kK}, {"A_TAB", arc::kTable}, {"A_DELTA", arc::kDelta},
-      {"A_DONEB", arc::kDoneB},
+      {"A_Q", arc::kQ}, {"A_K", arc::kK}, {"A_TAB", arc::kTable},
       {"A_PIN", arc::kPin}, {"A_POUT", arc::kPout},
   };
   for (const Equ& e : equs) EXPECT_EQ(sym(e.name), e.value) << e.name;
