@@ -127,9 +127,22 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
   mb[at(base, kMode)] = codes.code(mode, 0);  // D = 0: D >= 0, p = 0
   put24(mb, at(base, arc::kD), 0);
   put24(mb, at(base, arc::kCx), static_cast<std::uint32_t>(cx));
-  put24(mb, at(base, arc::kEx), static_cast<std::uint32_t>(ex));
   put24(mb, at(base, arc::kCy), static_cast<std::uint32_t>(cy));
-  put24(mb, at(base, arc::kEy), static_cast<std::uint32_t>(ey));
+  // The distances to the end in the end quadrant: from the start if the
+  // arc starts there, else from where it enters it (the outward axis at 0,
+  // the inward one at ceil(sqrt(R^2 - 1)): docs/sw8085.md, "Crossings").
+  std::int64_t rx = abs64(cx - ex), ry = abs64(cy - ey);
+  if (plan.crossings > 0) {
+    const std::int64_t entry = isqrt_ceil(plan.r2 - 1);
+    const bool eix = inward_is_x(plan.q_end, m.sense);
+    rx = eix ? entry - ex : ex;
+    ry = eix ? ey : entry - ey;
+  }
+  const auto crx = to_counter(rx), cry = to_counter(ry);
+  for (int i = 0; i < 3; ++i) {
+    mb[at(base, arc::kRx[i])] = crx[i];
+    mb[at(base, arc::kRy[i])] = cry[i];
+  }
   mb[at(base, arc::kQ)] = static_cast<std::uint8_t>(q);
   mb[at(base, arc::kK)] = at(base, arc::kTable + 4 * plan.crossings);
   auto patterns = [&](int qq) {

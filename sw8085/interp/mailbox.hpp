@@ -68,7 +68,12 @@ inline constexpr std::uint8_t kModeNonNeg = 0xFF, kModeNeg = 0x00;
 namespace arc {
 inline constexpr int kPout = -2, kPin = -1;
 inline constexpr int kD = 0x01;    // D', 3 bytes; its sign and p (D = 2*D' + p) from MODE
-inline constexpr int kCx = 0x05, kEx = 0x08, kCy = 0x0B, kEy = 0x0E;  // 3 bytes each
+inline constexpr int kCx = 0x05, kCy = 0x0B;  // 3 bytes each
+// The distance to the end on each axis in the end quadrant (the host's
+// value from the entry point, or from the start if the arc starts there):
+// distance counters as the line's, byte 0 below the coordinate.
+inline constexpr std::array<int, 3> kRx = {0x04, 0x08, 0x09};
+inline constexpr std::array<int, 3> kRy = {0x0A, 0x0E, 0x0F};
 inline constexpr int kQ = -3;
 // k, stored as the mailbox address of its crossing-table entry:
 // base + kTable + 4k (mod 256).

@@ -37,7 +37,9 @@ TEST(Mailbox, OffsetsAreTheProgramsEqus) {
       {"L_RY0", line::kRy[0]}, {"L_RY1", line::kRy[1]}, {"L_RY2", line::kRy[2]},
       {"L_PATX", line::kPatX}, {"L_PATY", line::kPatY}, {"L_AXES", line::kAxes}, {"L_NB", line::kNotB},
       {"L_A", line::kA},
-      {"A_D0", arc::kD}, {"A_CX", arc::kCx}, {"A_EX", arc::kEx}, {"A_CY", arc::kCy}, {"A_EY", arc::kEy},
+      {"A_D0", arc::kD}, {"A_CX", arc::kCx}, {"A_CY", arc::kCy},
+      {"A_RX0", arc::kRx[0]}, {"A_RX1", arc::kRx[1]}, {"A_RX2", arc::kRx[2]},
+      {"A_RY0", arc::kRy[0]}, {"A_RY1", arc::kRy[1]}, {"A_RY2", arc::kRy[2]},
       {"A_Q", arc::kQ}, {"A_K", arc::kK}, {"A_TAB", arc::kTable},
       {"A_PIN", arc::kPin}, {"A_POUT", arc::kPout},
   };
