@@ -47,6 +47,7 @@ Codes Codes::from_symbols(const std::map<std::string, std::uint16_t>& s) {
   Codes c;
   c.idle = need(s, "C_IDLE");
   c.lyo = need(s, "C_LYO");
+  c.lxo = need(s, "C_LXO");
   struct Family {
     const char* name;
     bool neg, done;
@@ -95,7 +96,7 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
     sm.b = b;
     sm.sx = m.xe < 0 ? -1 : +1;
     sm.sy = m.ye < 0 ? -1 : +1;
-    mb[at(base, kMode)] = a == 0 ? codes.lyo : line::kModeNonNeg;  // D = 0
+    mb[at(base, kMode)] = a == 0 ? codes.lyo : b == 0 ? codes.lxo : line::kModeNonNeg;  // D = 0
     put24(mb, at(base, line::kD), 0);
     const auto rx = to_counter(a), ry = to_counter(b);
     for (int i = 0; i < 3; ++i) {
@@ -105,7 +106,7 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
     mb[at(base, line::kPatX)] = pattern(Axis::X, sm.sx);
     mb[at(base, line::kPatY)] = pattern(Axis::Y, sm.sy);
     mb[at(base, line::kAxes)] = static_cast<std::uint8_t>((a > 0) + (b > 0));
-    put24(mb, at(base, line::kNotB), static_cast<std::uint32_t>(~b & 0xFFFFFF));
+    put24(mb, at(base, line::kNegB), static_cast<std::uint32_t>(-b & 0xFFFFFF));
     put24(mb, at(base, line::kA), static_cast<std::uint32_t>(a));
     return sm;
   }
@@ -194,7 +195,7 @@ State decode(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Co
   };
   if (!sm.arc) {
     bool neg;
-    if (mode == line::kModeNonNeg || mode == codes.lyo) neg = false;
+    if (mode == line::kModeNonNeg || mode == codes.lyo || mode == codes.lxo) neg = false;
     else if (mode == line::kModeNeg) neg = true;
     else if (mode == codes.fin_p[0]) neg = false, s.done = true;
     else throw bad("no line state has this MODE");

@@ -59,7 +59,7 @@ inline constexpr int kPatY = -2;
 inline constexpr int kD = 0x01;    // 3 bytes; sign in MODE (0xFF: D >= 0, 0x00: D < 0)
 inline constexpr int kPatX = 0x05;
 inline constexpr int kAxes = 0x08;  // axes with distance left
-inline constexpr int kNotB = 0x10;  // 3 bytes: ~|YE|
+inline constexpr int kNegB = 0x10;  // 3 bytes: -|YE| mod 2^24
 inline constexpr int kA = 0x14;     // 3 bytes: |XE|
 inline constexpr std::uint8_t kModeNonNeg = 0xFF, kModeNeg = 0x00;
 }  // namespace line
@@ -92,7 +92,7 @@ struct Codes {
     int parity = 0;    // p
     bool done = false;
   };
-  std::uint8_t idle = 0, lyo = 0;
+  std::uint8_t idle = 0, lyo = 0, lxo = 0;
   std::array<std::uint8_t, 2> fin_p{}, fin_n{};
   std::map<std::string, std::array<std::uint8_t, 2>> named;  // "AIX" -> {C_AIX0, C_AIX1}, ...
   std::map<std::uint8_t, ArcCode> arc;                        // every arc code (FIN included)

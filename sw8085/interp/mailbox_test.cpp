@@ -35,7 +35,7 @@ TEST(Mailbox, OffsetsAreTheProgramsEqus) {
       {"PSTEP", kPortStep}, {"PEDGES", kPortEdges}, {"PDONE", kPortDone},
       {"L_D0", line::kD}, {"L_RX0", line::kRx[0]}, {"L_RX1", line::kRx[1]}, {"L_RX2", line::kRx[2]},
       {"L_RY0", line::kRy[0]}, {"L_RY1", line::kRy[1]}, {"L_RY2", line::kRy[2]},
-      {"L_PATX", line::kPatX}, {"L_PATY", line::kPatY}, {"L_AXES", line::kAxes}, {"L_NB", line::kNotB},
+      {"L_PATX", line::kPatX}, {"L_PATY", line::kPatY}, {"L_AXES", line::kAxes}, {"L_NB", line::kNegB},
       {"L_A", line::kA},
       {"A_D0", arc::kD}, {"A_CX", arc::kCx}, {"A_CY", arc::kCy},
       {"A_RX0", arc::kRx[0]}, {"A_RX1", arc::kRx[1]}, {"A_RX2", arc::kRx[2]},
@@ -69,13 +69,13 @@ TEST(Mailbox, NoSymbolIsDefinedTwice) {
 
 TEST(Mailbox, CodesAreDistinctAndDispatchable) {
   const Codes c = Codes::from_symbols(Program::builtin().symbols);
-  std::set<std::uint8_t> all = {c.idle, c.lyo};
+  std::set<std::uint8_t> all = {c.idle, c.lyo, c.lxo};
   for (const auto& [code, info] : c.arc) {
     EXPECT_TRUE(all.insert(code).second) << "code " << int(code) << " twice";
     EXPECT_GE(code, 1);
     EXPECT_LT(code, 0x80);  // 01h..7Fh: the dispatch's JP
   }
-  EXPECT_EQ(all.size(), 2u + 2 * 18);
+  EXPECT_EQ(all.size(), 3u + 2 * 18);
 }
 
 // Distance counters across their byte boundaries: a line (v, 1) queued and
