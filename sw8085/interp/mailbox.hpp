@@ -37,8 +37,10 @@ inline constexpr std::uint8_t kNext = 0x01;       // base of the slot the progra
 inline constexpr std::uint8_t kActive = 0x02;     // base of the slot in use (0: idle, none)
 inline constexpr std::uint8_t kOverruns = 0x03;   // 3 bytes, little endian: command pulses lost
 inline constexpr std::uint8_t kReady = 0x06;      // kReadyMagic once initialised
+inline constexpr std::uint8_t kPend = 0x07;       // base of the slot armed to start next, 0: none
 inline constexpr std::uint8_t kIdleCount = 0x08;  // 2 bytes: command pulses served with no move
 inline constexpr std::uint8_t kLayout = 0x0A;     // kLayoutVersion
+inline constexpr std::uint8_t kStubs = 0x0B;      // the program's dispatch stubs (JMPs), up to the slots
 inline constexpr std::uint8_t kReadyMagic = 0x5A;
 inline constexpr std::uint8_t kLayoutVersion = 3;
 

@@ -28,7 +28,8 @@ TEST(Mailbox, OffsetsAreTheProgramsEqus) {
   // values, a slot, the ports, a line's block, an arc's block.
   const Equ equs[] = {
       {"MB_IDLE", kIdleMode}, {"MB_NEXT", kNext}, {"MB_ACTIVE", kActive}, {"MB_OVR", kOverruns},
-      {"MB_READY", kReady}, {"MB_IDLECNT", kIdleCount}, {"MB_LAYOUT", kLayout},
+      {"MB_READY", kReady}, {"MB_PEND", kPend}, {"MB_IDLECNT", kIdleCount}, {"MB_LAYOUT", kLayout},
+      {"MB_STUBS", kStubs},
       {"READY_MAGIC", kReadyMagic}, {"LAYOUT_VERSION", kLayoutVersion},
       {"SLOT0", kSlots[0]}, {"SLOT1", kSlots[1]}, {"S_MODE", kMode}, {"S_STATUS", kStatus},
       {"ST_QUEUED", kQueued}, {"ST_STARTED", kStarted},
@@ -76,6 +77,9 @@ TEST(Mailbox, CodesAreDistinctAndDispatchable) {
     EXPECT_LT(code, 0x80);  // 01h..7Fh: the dispatch's JP
   }
   EXPECT_EQ(all.size(), 3u + 2 * 18);
+  // The stubs the program copies to kStubs end below the first slot.
+  EXPECT_LE(sym("S_END") - sym("STUBS") + kStubs, kSlots[0] - 4);
+  EXPECT_GT(c.idle, kLayout);
 }
 
 // Distance counters across their byte boundaries: a line (v, 1) queued and
