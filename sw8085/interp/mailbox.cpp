@@ -144,7 +144,6 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
     mb[at(base, arc::kRx[i])] = crx[i];
     mb[at(base, arc::kRy[i])] = cry[i];
   }
-  mb[at(base, arc::kQ)] = static_cast<std::uint8_t>(q);
   mb[at(base, arc::kK)] = at(base, arc::kTable + 4 * plan.crossings);
   auto patterns = [&](int qq) {
     const bool qix = inward_is_x(qq, m.sense);
@@ -155,8 +154,15 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
   };
   mb[at(base, arc::kPin)] = patterns(q).first;
   mb[at(base, arc::kPout)] = patterns(q).second;
-  // The crossing table: the quadrant entered when k becomes k'.
+  // The crossing table: the quadrant entered when k becomes k', and the
+  // start quadrant at the start's k (its code is not used).
   const int step = m.sense == Sense::CCW ? 1 : 3;
+  {
+    const std::uint8_t e = at(base, arc::kTable + 4 * plan.crossings);
+    mb[static_cast<std::uint8_t>(e + 1)] = patterns(q).first;
+    mb[static_cast<std::uint8_t>(e + 2)] = patterns(q).second;
+    mb[static_cast<std::uint8_t>(e + arc::kEntryQ)] = static_cast<std::uint8_t>(q);
+  }
   for (int kn = plan.crossings - 1; kn >= 0; --kn) {
     const int qn = (q + step * (plan.crossings - kn)) & 3;
     const bool nix = inward_is_x(qn, m.sense);
@@ -179,7 +185,7 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
     mb[e] = code;
     mb[static_cast<std::uint8_t>(e + 1)] = patterns(qn).first;
     mb[static_cast<std::uint8_t>(e + 2)] = patterns(qn).second;
-    mb[static_cast<std::uint8_t>(e + 3)] = static_cast<std::uint8_t>(qn);
+    mb[static_cast<std::uint8_t>(e + arc::kEntryQ)] = static_cast<std::uint8_t>(qn);
   }
   return sm;
 }
@@ -218,12 +224,13 @@ State decode(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Co
   const std::int64_t d24 = get24(mb, at(base, arc::kD));
   const std::int64_t dp = it->second.neg ? d24 - (std::int64_t{1} << 24) : d24;
   s.d = 2 * dp + it->second.parity;
-  const int q = mb[at(base, arc::kQ)];
-  if (q > 3) throw bad("quadrant " + std::to_string(q) + " out of range");
-  s.quadrant = static_cast<std::uint8_t>(q);
   const int k4 = static_cast<std::uint8_t>(mb[at(base, arc::kK)] - base - arc::kTable);
   if (k4 % 4 != 0 || k4 > 16) throw bad("k pointer " + std::to_string(mb[at(base, arc::kK)]) + " is no table entry");
   s.crossings = static_cast<std::uint8_t>(k4 / 4);
+  // q is the q of k's table entry: the program moves the pointer.
+  const int q = mb[static_cast<std::uint8_t>(mb[at(base, arc::kK)] + arc::kEntryQ)];
+  if (q > 3) throw bad("quadrant " + std::to_string(q) + " out of range");
+  s.quadrant = static_cast<std::uint8_t>(q);
   s.x = quadrant_sign_x(q) * std::int64_t{get24(mb, at(base, arc::kCx))};
   s.y = quadrant_sign_y(q) * std::int64_t{get24(mb, at(base, arc::kCy))};
   return s;

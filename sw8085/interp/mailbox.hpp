@@ -76,14 +76,15 @@ inline constexpr int kCx = 0x05, kCy = 0x0B;  // 3 bytes each
 // distance counters as the line's, byte 0 below the coordinate.
 inline constexpr std::array<int, 3> kRx = {0x04, 0x08, 0x09};
 inline constexpr std::array<int, 3> kRy = {0x0A, 0x0E, 0x0F};
-inline constexpr int kQ = -3;
 // k, stored as the mailbox address of its crossing-table entry:
 // base + kTable + 4k (mod 256).
 inline constexpr int kK = 0x12;
-// The crossing table: for k' = 0..3, the entry of the quadrant entered when
-// k becomes k': CODE (the new family's code for p = 0, D >= 0; bit 7 set
-// if the move ends on entering that quadrant), PIN, POUT, q.
+// The crossing table: for k' = 0..4, the entry of the quadrant entered when
+// k becomes k' (and for the start's k, the start quadrant): CODE (the new
+// family's code for p = 0, D >= 0; bit 7 set if the move ends on entering
+// that quadrant), PIN, POUT, q. The slot's q is the q of k's entry.
 inline constexpr int kTable = 0x14;
+inline constexpr int kEntryQ = 3;  // q's offset in an entry
 }  // namespace arc
 
 // The MODE codes: assigned by the assembler (C_xxx in interp.a80), read from
