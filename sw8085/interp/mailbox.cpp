@@ -47,6 +47,7 @@ Codes Codes::from_symbols(const std::map<std::string, std::uint16_t>& s) {
   Codes c;
   c.idle = need(s, "C_IDLE");
   c.lyo = need(s, "C_LYO");
+  c.lxo = need(s, "C_LXO");
   struct Family {
     const char* name;
     bool neg, done;
@@ -95,7 +96,7 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
     sm.b = b;
     sm.sx = m.xe < 0 ? -1 : +1;
     sm.sy = m.ye < 0 ? -1 : +1;
-    mb[at(base, kMode)] = a == 0 ? codes.lyo : line::kModeNonNeg;  // D = 0
+    mb[at(base, kMode)] = a == 0 ? codes.lyo : b == 0 ? codes.lxo : line::kModeNonNeg;  // D = 0
     put24(mb, at(base, line::kD), 0);
     const auto rx = to_counter(a), ry = to_counter(b);
     for (int i = 0; i < 3; ++i) {
@@ -105,7 +106,7 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
     mb[at(base, line::kPatX)] = pattern(Axis::X, sm.sx);
     mb[at(base, line::kPatY)] = pattern(Axis::Y, sm.sy);
     mb[at(base, line::kAxes)] = static_cast<std::uint8_t>((a > 0) + (b > 0));
-    put24(mb, at(base, line::kNotB), static_cast<std::uint32_t>(~b & 0xFFFFFF));
+    put24(mb, at(base, line::kNegB), static_cast<std::uint32_t>(-b & 0xFFFFFF));
     put24(mb, at(base, line::kA), static_cast<std::uint32_t>(a));
     return sm;
   }
@@ -127,22 +128,65 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
   mb[at(base, kMode)] = codes.code(mode, 0);  // D = 0: D >= 0, p = 0
   put24(mb, at(base, arc::kD), 0);
   put24(mb, at(base, arc::kCx), static_cast<std::uint32_t>(cx));
-  put24(mb, at(base, arc::kEx), static_cast<std::uint32_t>(ex));
   put24(mb, at(base, arc::kCy), static_cast<std::uint32_t>(cy));
-  put24(mb, at(base, arc::kEy), static_cast<std::uint32_t>(ey));
-  mb[at(base, arc::kQ)] = static_cast<std::uint8_t>(q);
-  mb[at(base, arc::kK)] = static_cast<std::uint8_t>(plan.crossings);
-  mb[at(base, arc::kQstep)] = m.sense == Sense::CCW ? 1 : 3;
-  for (int qq = 0; qq < 4; ++qq) {
+  // The distances to the end in the end quadrant: from the start if the
+  // arc starts there, else from where it enters it (the outward axis at 0,
+  // the inward one at ceil(sqrt(R^2 - 1)): docs/sw8085.md, "Crossings").
+  std::int64_t rx = abs64(cx - ex), ry = abs64(cy - ey);
+  if (plan.crossings > 0) {
+    const std::int64_t entry = isqrt_ceil(plan.r2 - 1);
+    const bool eix = inward_is_x(plan.q_end, m.sense);
+    rx = eix ? entry - ex : ex;
+    ry = eix ? ey : entry - ey;
+  }
+  const auto crx = to_counter(rx), cry = to_counter(ry);
+  for (int i = 0; i < 3; ++i) {
+    mb[at(base, arc::kRx[i])] = crx[i];
+    mb[at(base, arc::kRy[i])] = cry[i];
+  }
+  mb[at(base, arc::kK)] = at(base, arc::kTable + 4 * plan.crossings);
+  auto patterns = [&](int qq) {
     const bool qix = inward_is_x(qq, m.sense);
     const Axis in = qix ? Axis::X : Axis::Y, out = qix ? Axis::Y : Axis::X;
     const int sin = in == Axis::X ? quadrant_sign_x(qq) : quadrant_sign_y(qq);
     const int sout = out == Axis::X ? quadrant_sign_x(qq) : quadrant_sign_y(qq);
-    mb[at(base, arc::kPatterns + 2 * qq)] = pattern(in, -sin);
-    mb[at(base, arc::kPatterns + 2 * qq + 1)] = pattern(out, sout);
+    return std::pair<std::uint8_t, std::uint8_t>{pattern(in, -sin), pattern(out, sout)};
+  };
+  mb[at(base, arc::kPin)] = patterns(q).first;
+  mb[at(base, arc::kPout)] = patterns(q).second;
+  // The crossing table: the quadrant entered when k becomes k', and the
+  // start quadrant at the start's k (its code is not used).
+  const int step = m.sense == Sense::CCW ? 1 : 3;
+  {
+    const std::uint8_t e = at(base, arc::kTable + 4 * plan.crossings);
+    mb[static_cast<std::uint8_t>(e + 1)] = patterns(q).first;
+    mb[static_cast<std::uint8_t>(e + 2)] = patterns(q).second;
+    mb[static_cast<std::uint8_t>(e + arc::kEntryQ)] = static_cast<std::uint8_t>(q);
   }
-  mb[at(base, arc::kPin)] = mb[at(base, arc::kPatterns + 2 * q)];
-  mb[at(base, arc::kPout)] = mb[at(base, arc::kPatterns + 2 * q + 1)];
+  for (int kn = plan.crossings - 1; kn >= 0; --kn) {
+    const int qn = (q + step * (plan.crossings - kn)) & 3;
+    const bool nix = inward_is_x(qn, m.sense);
+    std::uint8_t code;
+    if (kn > 0) {
+      code = codes.code(nix ? "AIX" : "AIY", 0);
+    } else {
+      // The end quadrant: the new outward axis is at 0, the new inward one
+      // enters at ceil(sqrt(R^2 - 1)) (docs/sw8085.md, "Crossings"), so
+      // which axes are at their end is known now.
+      const std::int64_t entry = isqrt_ceil(plan.r2 - 1);
+      const bool out_done = (nix ? ey : ex) == 0;
+      const bool in_done = (nix ? ex : ey) == entry;
+      if (in_done && out_done) code = codes.fin_p[0] | 0x80;  // the move ends on entering
+      else if (in_done) code = codes.code(nix ? "FOYP" : "FOXP", 0);
+      else if (out_done) code = codes.code(nix ? "FIXP" : "FIYP", 0);
+      else code = codes.code(nix ? "EIX" : "EIY", 0);
+    }
+    const std::uint8_t e = at(base, arc::kTable + 4 * kn);
+    mb[e] = code;
+    mb[static_cast<std::uint8_t>(e + 1)] = patterns(qn).first;
+    mb[static_cast<std::uint8_t>(e + 2)] = patterns(qn).second;
+    mb[static_cast<std::uint8_t>(e + arc::kEntryQ)] = static_cast<std::uint8_t>(qn);
+  }
   return sm;
 }
 
@@ -157,7 +201,7 @@ State decode(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Co
   };
   if (!sm.arc) {
     bool neg;
-    if (mode == line::kModeNonNeg || mode == codes.lyo) neg = false;
+    if (mode == line::kModeNonNeg || mode == codes.lyo || mode == codes.lxo) neg = false;
     else if (mode == line::kModeNeg) neg = true;
     else if (mode == codes.fin_p[0]) neg = false, s.done = true;
     else throw bad("no line state has this MODE");
@@ -180,10 +224,13 @@ State decode(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Co
   const std::int64_t d24 = get24(mb, at(base, arc::kD));
   const std::int64_t dp = it->second.neg ? d24 - (std::int64_t{1} << 24) : d24;
   s.d = 2 * dp + it->second.parity;
-  const int q = mb[at(base, arc::kQ)];
+  const int k4 = static_cast<std::uint8_t>(mb[at(base, arc::kK)] - base - arc::kTable);
+  if (k4 % 4 != 0 || k4 > 16) throw bad("k pointer " + std::to_string(mb[at(base, arc::kK)]) + " is no table entry");
+  s.crossings = static_cast<std::uint8_t>(k4 / 4);
+  // q is the q of k's table entry: the program moves the pointer.
+  const int q = mb[static_cast<std::uint8_t>(mb[at(base, arc::kK)] + arc::kEntryQ)];
   if (q > 3) throw bad("quadrant " + std::to_string(q) + " out of range");
   s.quadrant = static_cast<std::uint8_t>(q);
-  s.crossings = mb[at(base, arc::kK)];
   s.x = quadrant_sign_x(q) * std::int64_t{get24(mb, at(base, arc::kCx))};
   s.y = quadrant_sign_y(q) * std::int64_t{get24(mb, at(base, arc::kCy))};
   return s;

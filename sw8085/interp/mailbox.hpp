@@ -37,10 +37,12 @@ inline constexpr std::uint8_t kNext = 0x01;       // base of the slot the progra
 inline constexpr std::uint8_t kActive = 0x02;     // base of the slot in use (0: idle, none)
 inline constexpr std::uint8_t kOverruns = 0x03;   // 3 bytes, little endian: command pulses lost
 inline constexpr std::uint8_t kReady = 0x06;      // kReadyMagic once initialised
+inline constexpr std::uint8_t kPend = 0x07;       // base of the slot armed to start next, 0: none
 inline constexpr std::uint8_t kIdleCount = 0x08;  // 2 bytes: command pulses served with no move
 inline constexpr std::uint8_t kLayout = 0x0A;     // kLayoutVersion
+inline constexpr std::uint8_t kStubs = 0x0B;      // the program's dispatch stubs (JMPs), up to the slots
 inline constexpr std::uint8_t kReadyMagic = 0x5A;
-inline constexpr std::uint8_t kLayoutVersion = 2;
+inline constexpr std::uint8_t kLayoutVersion = 3;
 
 // Slots: a slot spans base-4 .. base+0x3B.
 inline constexpr std::array<std::uint8_t, 2> kSlots = {0x80, 0xC0};
@@ -59,7 +61,7 @@ inline constexpr int kPatY = -2;
 inline constexpr int kD = 0x01;    // 3 bytes; sign in MODE (0xFF: D >= 0, 0x00: D < 0)
 inline constexpr int kPatX = 0x05;
 inline constexpr int kAxes = 0x08;  // axes with distance left
-inline constexpr int kNotB = 0x10;  // 3 bytes: ~|YE|
+inline constexpr int kNegB = 0x10;  // 3 bytes: -|YE| mod 2^24
 inline constexpr int kA = 0x14;     // 3 bytes: |XE|
 inline constexpr std::uint8_t kModeNonNeg = 0xFF, kModeNeg = 0x00;
 }  // namespace line
@@ -68,9 +70,21 @@ inline constexpr std::uint8_t kModeNonNeg = 0xFF, kModeNeg = 0x00;
 namespace arc {
 inline constexpr int kPout = -2, kPin = -1;
 inline constexpr int kD = 0x01;    // D', 3 bytes; its sign and p (D = 2*D' + p) from MODE
-inline constexpr int kCx = 0x05, kEx = 0x08, kCy = 0x0B, kEy = 0x0E;  // 3 bytes each
-inline constexpr int kQ = 0x11, kK = 0x12, kQstep = 0x13;
-inline constexpr int kPatterns = 0x14;  // PIN, POUT of quadrants 0..3
+inline constexpr int kCx = 0x05, kCy = 0x0B;  // 3 bytes each
+// The distance to the end on each axis in the end quadrant (the host's
+// value from the entry point, or from the start if the arc starts there):
+// distance counters as the line's, byte 0 below the coordinate.
+inline constexpr std::array<int, 3> kRx = {0x04, 0x08, 0x09};
+inline constexpr std::array<int, 3> kRy = {0x0A, 0x0E, 0x0F};
+// k, stored as the mailbox address of its crossing-table entry:
+// base + kTable + 4k (mod 256).
+inline constexpr int kK = 0x12;
+// The crossing table: for k' = 0..4, the entry of the quadrant entered when
+// k becomes k' (and for the start's k, the start quadrant): CODE (the new
+// family's code for p = 0, D >= 0; bit 7 set if the move ends on entering
+// that quadrant), PIN, POUT, q. The slot's q is the q of k's entry.
+inline constexpr int kTable = 0x14;
+inline constexpr int kEntryQ = 3;  // q's offset in an entry
 }  // namespace arc
 
 // The MODE codes: assigned by the assembler (C_xxx in interp.a80), read from
@@ -81,7 +95,7 @@ struct Codes {
     int parity = 0;    // p
     bool done = false;
   };
-  std::uint8_t idle = 0, lyo = 0;
+  std::uint8_t idle = 0, lyo = 0, lxo = 0;
   std::array<std::uint8_t, 2> fin_p{}, fin_n{};
   std::map<std::string, std::array<std::uint8_t, 2>> named;  // "AIX" -> {C_AIX0, C_AIX1}, ...
   std::map<std::uint8_t, ArcCode> arc;                        // every arc code (FIN included)

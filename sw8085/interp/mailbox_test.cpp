@@ -28,17 +28,20 @@ TEST(Mailbox, OffsetsAreTheProgramsEqus) {
   // values, a slot, the ports, a line's block, an arc's block.
   const Equ equs[] = {
       {"MB_IDLE", kIdleMode}, {"MB_NEXT", kNext}, {"MB_ACTIVE", kActive}, {"MB_OVR", kOverruns},
-      {"MB_READY", kReady}, {"MB_IDLECNT", kIdleCount}, {"MB_LAYOUT", kLayout},
+      {"MB_READY", kReady}, {"MB_PEND", kPend}, {"MB_IDLECNT", kIdleCount}, {"MB_LAYOUT", kLayout},
+      {"MB_STUBS", kStubs},
       {"READY_MAGIC", kReadyMagic}, {"LAYOUT_VERSION", kLayoutVersion},
       {"SLOT0", kSlots[0]}, {"SLOT1", kSlots[1]}, {"S_MODE", kMode}, {"S_STATUS", kStatus},
       {"ST_QUEUED", kQueued}, {"ST_STARTED", kStarted},
       {"PSTEP", kPortStep}, {"PEDGES", kPortEdges}, {"PDONE", kPortDone},
       {"L_D0", line::kD}, {"L_RX0", line::kRx[0]}, {"L_RX1", line::kRx[1]}, {"L_RX2", line::kRx[2]},
       {"L_RY0", line::kRy[0]}, {"L_RY1", line::kRy[1]}, {"L_RY2", line::kRy[2]},
-      {"L_PATX", line::kPatX}, {"L_PATY", line::kPatY}, {"L_AXES", line::kAxes}, {"L_NB", line::kNotB},
+      {"L_PATX", line::kPatX}, {"L_PATY", line::kPatY}, {"L_AXES", line::kAxes}, {"L_NB", line::kNegB},
       {"L_A", line::kA},
-      {"A_D0", arc::kD}, {"A_CX", arc::kCx}, {"A_EX", arc::kEx}, {"A_CY", arc::kCy}, {"A_EY", arc::kEy},
-      {"A_Q", arc::kQ}, {"A_K", arc::kK}, {"A_QSTEP", arc::kQstep}, {"A_PATT", arc::kPatterns},
+      {"A_D0", arc::kD}, {"A_CX", arc::kCx}, {"A_CY", arc::kCy},
+      {"A_RX0", arc::kRx[0]}, {"A_RX1", arc::kRx[1]}, {"A_RX2", arc::kRx[2]},
+      {"A_RY0", arc::kRy[0]}, {"A_RY1", arc::kRy[1]}, {"A_RY2", arc::kRy[2]},
+      {"A_K", arc::kK}, {"A_TAB", arc::kTable},
       {"A_PIN", arc::kPin}, {"A_POUT", arc::kPout},
   };
   for (const Equ& e : equs) EXPECT_EQ(sym(e.name), e.value) << e.name;
@@ -67,13 +70,16 @@ TEST(Mailbox, NoSymbolIsDefinedTwice) {
 
 TEST(Mailbox, CodesAreDistinctAndDispatchable) {
   const Codes c = Codes::from_symbols(Program::builtin().symbols);
-  std::set<std::uint8_t> all = {c.idle, c.lyo};
+  std::set<std::uint8_t> all = {c.idle, c.lyo, c.lxo};
   for (const auto& [code, info] : c.arc) {
     EXPECT_TRUE(all.insert(code).second) << "code " << int(code) << " twice";
     EXPECT_GE(code, 1);
     EXPECT_LT(code, 0x80);  // 01h..7Fh: the dispatch's JP
   }
-  EXPECT_EQ(all.size(), 2u + 2 * 18);
+  EXPECT_EQ(all.size(), 3u + 2 * 18);
+  // The stubs the program copies to kStubs end below the first slot.
+  EXPECT_LE(sym("S_END") - sym("STUBS") + sym("MB_STUBS"), kSlots[0] - 4);
+  EXPECT_GT(c.idle, kLayout);
 }
 
 // Distance counters across their byte boundaries: a line (v, 1) queued and
