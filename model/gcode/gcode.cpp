@@ -190,14 +190,17 @@ class Reader {
                            " in one line are both " + group + " words");
       *slot = g;
     }
+    // LinuxCNC's order of execution: the feed (step 3) before the units
+    // (step 12), so F is read in the units in effect before this line's
+    // G20/G21; the feed then stays the same speed across a change of units.
+    if (w.f) {
+      if (!(w.f->value > 0)) fail(w.f->column, "feed F must be > 0 (got " + fmt(w.f->value) + ")");
+      modal_.feed_mm_s = w.f->value * (modal_.inches ? 25.4 : 1.0) / 60.0;
+    }
     if (g_units) modal_.inches = g_units->value == 20;
     if (g_plane) modal_.plane = g_plane->value == 17 ? Plane::XY : (g_plane->value == 18 ? Plane::ZX : Plane::YZ);
     if (g_dist) modal_.incremental = g_dist->value == 91;
     const double unit = modal_.inches ? 25.4 : 1.0;
-    if (w.f) {
-      if (!(w.f->value > 0)) fail(w.f->column, "feed F must be > 0 (got " + fmt(w.f->value) + ")");
-      modal_.feed_mm_s = w.f->value * unit / 60.0;
-    }
     if (g_motion) modal_.motion = static_cast<Motion>(static_cast<int>(g_motion->value));
 
     const bool has_axis = w.axis[0] || w.axis[1] || w.axis[2];
@@ -250,27 +253,7 @@ class Reader {
       if (w.offset[a]) off[a] = w.offset[a]->value * unit;
 
     if (w.r) {
-      const double r = w.r->value * unit;
-      const double d = inplane_dist(b.start, b.end, p);
-      if (r == 0) fail(w.r->column, "arc radius R is zero");
-      if (d == 0) fail(w.r->column, "an R arc cannot be a full circle (its end equals its start in the " +
-                                        std::string(plane_name(p)) + " plane): use I J K");
-      double h2 = r * r - d * d / 4;
-      if (h2 < 0) {
-        if (d / 2 - std::fabs(r) > radius_tol_mm())
-          fail(w.r->column, "radius R=" + fmt(std::fabs(r) / unit) + " is too small: the end is " + fmt(d / unit) +
-                                " away from the start");
-        h2 = 0;
-      }
-      // Centre on the left of start->end for CCW with R > 0 (arc <= 180 deg).
-      const double ux = (b.end[i] - b.start[i]) / d, uy = (b.end[j] - b.start[j]) / d;
-      double side = (b.motion == Motion::ArcCCW ? 1.0 : -1.0) * (r > 0 ? 1.0 : -1.0);
-      const double h = std::sqrt(h2) * side;
-      b.centre = b.start;
-      b.centre[i] = (b.start[i] + b.end[i]) / 2 - uy * h;
-      b.centre[j] = (b.start[j] + b.end[j]) / 2 + ux * h;
-      b.r_start = b.r_end = std::fabs(r);
-      b.full_circle = false;
+      r_arc(b, *w.r, unit);
       return;
     }
 
@@ -308,12 +291,40 @@ class Reader {
     b.full_circle = inplane_dist(b.start, b.end, p) <= 1e-9 * std::max(1.0, b.r_start);
   }
 
+  // R-format arc, by LinuxCNC's rule: refused when |R| is shorter than half
+  // the chord by more than kArcRTol (program units); otherwise, when |R| is
+  // at most half the chord, the arc is the half circle on the chord (radius
+  // half the chord, centre its midpoint), so the path never jumps.
+  void r_arc(Block& b, const Word& rw, double unit) const {
+    const Plane p = b.plane;
+    const int i = first_axis(p), j = second_axis(p);
+    const double r = rw.value * unit;
+    const double d = inplane_dist(b.start, b.end, p);
+    if (r == 0) fail(rw.column, "arc radius R is zero");
+    if (d == 0) fail(rw.column, "an R arc cannot be a full circle (its end equals its start in the " +
+                                    std::string(plane_name(p)) + " plane): use I J K");
+    const double half = d / 2, tol = kArcRTolIn * 25.4;  // mm
+    if (half - std::fabs(r) > tol)
+      fail(rw.column, "arc radius too small to reach the end point: |R|=" + fmt(std::fabs(r) / unit) +
+                          ", half the chord " + fmt(half / unit) + " (tolerance " + fmt(tol / unit, 5) + ")");
+    const double radius = std::max(std::fabs(r), half);
+    const double h2 = std::max(0.0, radius * radius - half * half);
+    // Centre on the left of start->end for CCW with R > 0 (arc <= 180 deg).
+    const double ux = (b.end[i] - b.start[i]) / d, uy = (b.end[j] - b.start[j]) / d;
+    const double side = (b.motion == Motion::ArcCCW ? 1.0 : -1.0) * (r > 0 ? 1.0 : -1.0);
+    const double h = std::sqrt(h2) * side;
+    b.centre = b.start;
+    b.centre[i] = (b.start[i] + b.end[i]) / 2 - uy * h;
+    b.centre[j] = (b.start[j] + b.end[j]) / 2 + ux * h;
+    b.r_start = inplane_dist(b.start, b.centre, p);
+    b.r_end = inplane_dist(b.end, b.centre, p);
+    b.full_circle = false;
+  }
+
   void radii(const Block& b, int col, double unit) const {
     const std::string why = check_radii(b.r_start / unit, b.r_end / unit, modal_.inches);
     if (!why.empty()) fail(col, why);
   }
-
-  double radius_tol_mm() const { return modal_.inches ? kRadiusTolIn * 25.4 : kRadiusTolMm; }
 
   Modal modal_;
   Vec3 pos_;

@@ -97,6 +97,10 @@ std::vector<Block> parse(std::string_view text, const Options& options = {});
 // LinuxCNC's arc radius tolerance in the program's units.
 constexpr double kRadiusTolMm = 0.0283;
 constexpr double kRadiusTolIn = 0.00283;
+// LinuxCNC's tolerance for an R arc whose |R| is shorter than half its chord
+// (0.00005 in = 0.00127 mm, measured against rs274: half chord 10 mm, R
+// 9.99875 is taken, R 9.9987 refused).
+constexpr double kArcRTolIn = 0.00005;
 
 // Empty when r1 and r2 (program units) agree by LinuxCNC's rule, else the
 // problem, giving both radii, e.g. "radius to end of arc differs from radius

@@ -50,7 +50,7 @@ TEST(GcodeGrammar, CommentsLineNumbersBlanksCaseAndCrlf) {
 }
 
 TEST(GcodeGrammar, ModalMotionIncrementalAndInches) {
-  const auto b = parse("G20 G91 G1 X1 F10\nY2\nG90 G21 X0 Y0\n");
+  const auto b = parse("G20\nG91 G1 X1 F10\nY2\nG90 G21 X0 Y0\n");
   ASSERT_EQ(b.size(), 3u);
   EXPECT_EQ(b[0].end, (Vec3{25.4, 0, 0}));
   EXPECT_NEAR(b[0].feed_mm_s, 10 * 25.4 / 60, 1e-12);
@@ -92,6 +92,47 @@ TEST(GcodeGrammar, RadiusFormCentreBothSigns) {
   const Vec3 cw_short = c("G0 X10\nG2 X0 Y10 R10 F1\n");
   EXPECT_NEAR(cw_short.x, 10, 1e-12);
   EXPECT_NEAR(cw_short.y, 10, 1e-12);
+}
+
+// F and G20/G21 on one line: LinuxCNC sets the feed (step 3 of its order of
+// execution) before the units (step 12), so F is read in the units before the
+// line; rs274 prints SET_FEED_RATE(6) then USE_LENGTH_UNITS(INCHES) for
+// `G20 F6`, and the feed stays 6 mm/min on the inch moves.
+TEST(GcodeFeedOrder, FeedIsReadInTheUnitsBeforeTheLine) {
+  auto b = parse("G20 F6 G1 X1\n");
+  ASSERT_EQ(b.size(), 1u);
+  EXPECT_NEAR(b[0].feed_mm_s, 6.0 / 60, 1e-12);
+  EXPECT_NEAR(b[0].end.x, 25.4, 1e-12);
+  b = parse("G20\nG21 F100 G1 X2\nX3\n");  // 100 in/min, kept after G21
+  ASSERT_EQ(b.size(), 2u);
+  EXPECT_NEAR(b[0].feed_mm_s, 100 * 25.4 / 60, 1e-12);
+  EXPECT_NEAR(b[1].feed_mm_s, 100 * 25.4 / 60, 1e-12);
+  b = parse("G20\nF6 G1 X1\n");  // F on a line after G20: inches
+  EXPECT_NEAR(b[0].feed_mm_s, 6 * 25.4 / 60, 1e-12);
+}
+
+// R-format arcs by LinuxCNC's rule (measured with rs274: half chord 10 mm,
+// R 9.99875 taken, R 9.9987 refused; the tolerance is 0.00005 in).
+TEST(GcodeRFormat, RadiusShortOfHalfTheChord) {
+  // 25 um short: refused, naming R and the half chord (it was run at radius
+  // R about the midpoint, the path jumping by 25 um).
+  expect_error("G0 X10 Y0\nG2 X-10 Y0 R9.975 F600\n", 2, 12, "too small to reach the end point: |R|=9.9750");
+  expect_error("G0 X10 Y0\nG2 X-10 Y0 R9.9987 F600\n", 2, 12, "half the chord 10.0000");
+  // 1 um short: the half circle on the chord, radius 10 both ends.
+  const auto b = parse("G0 X10 Y0\nG2 X-10 Y0 R9.999 F600\n");
+  ASSERT_EQ(b.size(), 2u);
+  EXPECT_NEAR(b[1].centre.x, 0, 1e-12);
+  EXPECT_NEAR(b[1].centre.y, 0, 1e-12);
+  EXPECT_NEAR(b[1].r_start, 10, 1e-12);
+  EXPECT_NEAR(b[1].r_end, 10, 1e-12);
+  // A semicircle whose end is rounded by 1 um: radius half the chord.
+  const auto c = parse("G0 X10 Y0\nG3 X-10.001 Y0 R10 F600\n");
+  EXPECT_NEAR(c[1].centre.x, -0.0005, 1e-12);
+  EXPECT_NEAR(c[1].r_start, 10.0005, 1e-12);
+  EXPECT_NEAR(c[1].r_end, 10.0005, 1e-12);
+  // Inches: 0.00005 in.
+  EXPECT_NO_THROW(parse("G20 G0 X0.5\nG2 X-0.5 Y0 R0.49996 F6\n"));
+  expect_error("G20 G0 X0.5\nG2 X-0.5 Y0 R0.49994 F6\n", 2, 13, "too small");
 }
 
 TEST(GcodeRadiusRule, LinuxCncRuleBothWays) {
@@ -146,7 +187,7 @@ TEST(GcodeErrors, EveryErrorNamesLineAndColumn) {
   expect_error("G2 X10 I5 R5 F10\n", 1, 11, "R or I/J/K offsets, not both");
   expect_error("G2 X10 K5 F10\n", 1, 8, "K offset is off the G17 plane");
   expect_error("G2 X10 Y0 F10 R0\n", 1, 15, "radius R is zero");
-  expect_error("G2 X10 Y0 F10 R4\n", 1, 15, "is too small");
+  expect_error("G2 X10 Y0 F10 R4\n", 1, 15, "too small to reach the end point");
   expect_error("G2 X0 Y0 Z1 F10 R4\n", 1, 17, "cannot be a full circle");
   expect_error("G2 X1 Y1 I0 J0 F10\n", 1, 1, "radius is zero");
   expect_error("G0 X1\n   G1 Y1 X1e5 F1\n", 2, 12, "unsupported word 'E'");

@@ -56,6 +56,12 @@ done
   bad "pulse counts"
 sort -s -g -k1,1 -c "$work/pulses.txt" && ok || bad "pulses not in time order"
 
+# R arcs by LinuxCNC's rule: a semicircle whose end is rounded by 1 um runs
+# on the half circle of its chord, within the tolerance (exit 0; it was
+# interpolated at radius R about the midpoint and flagged EXCEEDED).
+printf 'G21 G0 X10 Y0\nG3 X-10.001 Y0 R10 F600\n' > "$work/semi.ngc"
+"$contour" gcode "$work/semi.ngc" > "$work/semi.out" && ok || bad "rounded semicircle exit $?: $(cat "$work/semi.out")"
+
 # Errors: exit 2, one line on stderr, naming the problem.
 printf 'G1 X1 F10\nG2 X10.04 Y0 I5 J0\n' > "$work/radius.ngc"
 printf 'G1 X1 F10\nG1 M3\n' > "$work/word.ngc"
@@ -88,6 +94,11 @@ expect_error "--engine: unknown engine 'nope'" "$work/line.ngc" --pulses --engin
 expect_error "--steps-per-mm: must be > 0" "$work/line.ngc" --pulses --steps-per-mm 0
 expect_error "does not combine" "$work/line.ngc" --pulses --csv "$work/x.csv"
 expect_error "unknown option '--bogus'" "$work/line.ngc" --bogus
+expect_error "'$work' is a directory, not a file" "$work"
+expect_error "--config: '$work' is a directory" "$work/line.ngc" --config "$work"
+expect_error "--cycle: at most 1000 ms" "$work/line.ngc" --cycle 1e9
+printf 'G0 X10 Y0\nG2 X-10 Y0 R9.975 F600\n' > "$work/rshort.ngc"
+expect_error "rshort.ngc: line 2, column 12: arc radius too small to reach the end point: |R|=9.9750" "$work/rshort.ngc"
 printf 'G1 X100000 F0.01\n' > "$work/long.ngc"
 expect_error "more than this tool simulates" "$work/long.ngc"
 

@@ -398,7 +398,7 @@ Report analyse(const Plan& plan, const std::vector<Sample>& samples) {
     }
     v_prev = v;
   }
-  constexpr double kSlack = 1 + 1e-9;
+  constexpr double kSlack = 1 + kLimitRelTol;
   r.tol_ok = r.max_chord_error <= c.tol_mm * kSlack;
   for (auto& ax : r.axes) {
     ax.v_ok = ax.peak_v <= ax.vmax * kSlack;

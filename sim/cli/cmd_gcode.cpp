@@ -28,7 +28,7 @@ const char* kHelp =
     "\noptions:\n"
     "  --format F        summary (default) or json (total time as \"total_time_s\")\n"
     "  --accel A         acceleration limit of every axis, mm/min^2 (default 3528000 = 0.1 g)\n"
-    "  --cycle MS        control cycle, ms (default 1)\n"
+    "  --cycle MS        control cycle, ms (default 1, at most 1000)\n"
     "  --tol UM          chord tolerance, um (default 0.02)\n"
     "  --chord M         chord placement, paper B Fig. 1: a inside, b outside,\n"
     "                    c inside and outside (default c)\n"
@@ -58,7 +58,14 @@ double positive(const std::string& text, const std::string& what) {
   return v;
 }
 
+// Refuses a path that is a directory (an ifstream opens one and reads nothing).
+void require_regular_file(const std::string& path, const std::string& what) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw UsageError(what + "'" + path + "' is a directory, not a file");
+}
+
 void read_config(const std::string& path, planner::Machine& m) {
+  require_regular_file(path, "--config: ");
   std::ifstream in(path);
   if (!in) throw UsageError("--config: cannot read '" + path + "'");
   std::string line;
@@ -211,6 +218,8 @@ int write_svgs(const std::string& dir, const std::string& file, const planner::P
   return files;
 }
 
+constexpr double kMaxCycleS = 1.0;  // --cycle: a control cycle of at most 1 s
+
 ChordMethod parse_chord(const std::string& v) {
   if (v == "a") return ChordMethod::Inside;
   if (v == "b") return ChordMethod::Outside;
@@ -227,7 +236,10 @@ Config parse_config(const Args& a) {
     const double acc = positive(*v, "--accel") / 3600;
     c.machine.amax = {acc, acc, acc};
   }
-  if (auto v = a.option("cycle")) c.cycle_s = positive(*v, "--cycle") / 1000;
+  if (auto v = a.option("cycle")) {
+    c.cycle_s = positive(*v, "--cycle") / 1000;
+    if (c.cycle_s > kMaxCycleS) throw UsageError("--cycle: at most 1000 ms (got '" + *v + "')");
+  }
   if (auto v = a.option("tol")) c.tol_mm = positive(*v, "--tol") / 1000;
   if (auto v = a.option("chord")) c.chord = parse_chord(*v);
   return c;
@@ -263,6 +275,7 @@ Request parse_request(const Args& a) {
 }
 
 std::vector<gcode::Block> read_program(const std::string& file) {
+  require_regular_file(file, "");
   std::ifstream in(file, std::ios::binary);
   if (!in) throw UsageError("cannot read '" + file + "'");
   std::stringstream buf;
