@@ -164,12 +164,14 @@ TEST(GcodeRadiusRule, ReaderAppliesItToPlaneAnd3DArcs) {
 }
 
 TEST(GcodeErrors, EveryErrorNamesLineAndColumn) {
-  expect_error("G1 X1 F10\nG1 M3\n", 2, 4, "unsupported word 'M'");
+  expect_error("G1 X1 F10\nG1 M98\n", 2, 4, "unsupported M code M98");
+  expect_error("G1 X1 A3 F10\n", 1, 7, "unsupported word 'A' (this reader has the axes X Y Z)");
   expect_error("G1 X F10\n", 1, 4, "word 'X' has no number");
   expect_error("G1 X1 X2 F10\n", 1, 7, "two X words");
   expect_error("G1 G2 X1 F10\n", 1, 4, "both motion words");
   expect_error("G17 G18\n", 1, 5, "both plane words");
-  expect_error("G4\n", 1, 1, "unsupported G code G4");
+  expect_error("G4\n", 1, 1, "G4 needs P");
+  expect_error("G5 X1\n", 1, 1, "unsupported G code G5");
   expect_error("G1.5 X1\n", 1, 1, "unsupported G code");
   expect_error("X1\n", 1, 1, "no motion mode");
   expect_error("G1 X1\n", 1, 1, "no feed rate");
@@ -180,7 +182,8 @@ TEST(GcodeErrors, EveryErrorNamesLineAndColumn) {
   expect_error("G1 X1 F1 )\n", 1, 10, "')' without a matching '('");
   expect_error("G1 X1 F1 N5\n", 1, 10, "line number N must be the first word");
   expect_error("N1.5 G0 X1\n", 1, 1, "whole number");
-  expect_error("G1 X1 F1 #\n", 1, 10, "unexpected character '#'");
+  expect_error("G1 X1 F1 #\n", 1, 10, "parameters ('#') are not supported");
+  expect_error("G1 X1 F1 $\n", 1, 10, "unexpected character '$'");
   expect_error("%x\n", 1, 2, "text after '%'");
   expect_error("G1 X1 I2 F10\n", 1, 7, "only allowed with G2/G3");
   expect_error("G2 X1 F10\n", 1, 1, "needs the centre offsets");
@@ -202,6 +205,134 @@ TEST(GcodeErrors, ThreeDArcPlaneChecks) {
   EXPECT_NO_THROW(parse("G0 X10\nG18 G3 X0 Y0 Z10 I-10 J0 K0 F60\n"));
   // A 3D half circle: start, centre and end in one line.
   expect_error("G0 X10\nG3 X-10 Y0 Z0.0001 I-10 J0 K0.00005 F60\n", 2, 1, "in one line");
+}
+
+// The non-motion language: events in LinuxCNC's order, not refusals.
+std::string codes(const Program& p) {
+  std::string s;
+  for (const auto& e : p.events) s += (s.empty() ? "" : ",") + e.code;
+  return s;
+}
+
+TEST(GcodeLanguage, SpindleCoolantToolAndStopWordsAreEvents) {
+  // Order within a line: S, T, M6, M3, M8 (LinuxCNC's steps 4-8), then the stop.
+  const Program p = read("M8 M3 M6 T2 S12000 G1 X1 F100 M1\n");
+  EXPECT_EQ(codes(p), "S12000,T2,M6 T2,M3,M8,M1");
+  // Stops (M6, M3, M1) are dwells of 0 s: the machine comes to rest.
+  ASSERT_EQ(p.blocks.size(), 4u);
+  EXPECT_TRUE(p.blocks[0].is_dwell());
+  EXPECT_EQ(p.blocks[0].dwell_s, 0);
+  EXPECT_TRUE(p.blocks[1].is_dwell());
+  EXPECT_EQ(p.blocks[2].motion, Motion::Line);
+  EXPECT_TRUE(p.blocks[3].is_dwell());
+  EXPECT_EQ(p.events[5].before, 3u);  // M1 after the move
+  EXPECT_FALSE(p.ended);
+}
+
+TEST(GcodeLanguage, NothingAfterProgramEndRuns) {
+  for (const char* end : {"M2", "M30"}) {
+    const Program p = read(std::string("G1 X1 F100\n") + end + "\nG1 X5\nthis is not G-code\n");
+    EXPECT_TRUE(p.ended) << end;
+    ASSERT_EQ(p.blocks.size(), 1u) << end;
+    EXPECT_EQ(codes(p), end);
+  }
+  // A program between '%' lines ends at the second one.
+  const Program q = read("%\nG1 X1 F100\n%\nG1 X9 junk\n");
+  EXPECT_TRUE(q.ended);
+  EXPECT_EQ(q.blocks.size(), 1u);
+}
+
+TEST(GcodeLanguage, DwellFeedModeCutterCompAndPathControl) {
+  const Program p = read("G94 G40 G1 X1 F60\nG4 P0.5\nG61 X2\nG64 P0.01 Q0.01 X3\nG64 X4\nG61.1 X5\n");
+  ASSERT_EQ(p.blocks.size(), 6u);
+  EXPECT_TRUE(p.blocks[1].is_dwell());
+  EXPECT_DOUBLE_EQ(p.blocks[1].dwell_s, 0.5);
+  EXPECT_EQ(p.blocks[0].path, PathMode::Blend);
+  EXPECT_EQ(p.blocks[2].path, PathMode::ExactStop);
+  EXPECT_EQ(p.blocks[3].path, PathMode::Blend);
+  EXPECT_DOUBLE_EQ(p.blocks[3].blend_tol_mm, 0.01);
+  EXPECT_LT(p.blocks[4].blend_tol_mm, 0);
+  EXPECT_EQ(p.blocks[5].path, PathMode::ExactStop);
+  EXPECT_DOUBLE_EQ(read("G20 G64 P0.001 G1 X1 F1\n").blocks[0].blend_tol_mm, 0.0254);
+  expect_error("G93 G1 X1 F1\n", 1, 1, "inverse time feed (G93) is not supported");
+  expect_error("G1 X1 F1\nG41 D1 X2\n", 2, 1, "cutter radius compensation (G41/G42) is not supported");
+  expect_error("G42 X2\n", 1, 1, "G41/G42");
+  expect_error("G4 P-1\n", 1, 4, "dwell P must be >= 0");
+  expect_error("G1 X1 F1 P2\n", 1, 10, "P word with no G4, G10, G64 or arc");
+  expect_error("G81 X1 Y1 Z-1 R1 F10\n", 1, 1, "canned cycle G81 is not supported");
+}
+
+TEST(GcodeLanguage, WorkOffsetsAndMachineCoordinates) {
+  // G10 L2 P2 sets G55's offset; G55 then reads X0 as machine X10.
+  const Program p = read(
+      "G10 L2 P2 X10 Y20 Z-5\nG55 G0 X0 Y0 Z0\nG53 G0 Z0\nG54 G0 X1\n"
+      "G0 X3 Y4\nG10 L20 P1 X0 Y0\nG0 X1 Y1\nG59.3 G0 X0\n");
+  ASSERT_EQ(p.blocks.size(), 6u);
+  EXPECT_EQ(p.blocks[0].end, (Vec3{10, 20, -5}));
+  EXPECT_EQ(p.blocks[1].end, (Vec3{10, 20, 0}));    // G53: machine Z0
+  EXPECT_EQ(p.blocks[2].end, (Vec3{1, 20, 0}));     // G54, offset 0
+  EXPECT_EQ(p.blocks[3].end, (Vec3{3, 4, 0}));
+  EXPECT_EQ(p.blocks[4].end, (Vec3{4, 5, 0}));      // L20: (3,4) now reads (0,0)
+  EXPECT_EQ(p.blocks[5].end, (Vec3{0, 5, 0}));      // G59.3: offset 0
+  EXPECT_EQ(codes(p), "G10 L2 P2,G55,G54,G10 L20 P1,G59.3");
+  expect_error("G53 G2 X1 Y1 I1 F1\n", 1, 1, "G53 needs G0 or G1");
+  expect_error("G91 G53 G0 X1\n", 1, 5, "incremental");
+  expect_error("G10 L1 P1 Z3\n", 1, 5, "G10 L1 is not supported");
+  expect_error("G10 L2 P10 X1\n", 1, 8, "G10 P must be 0..9");
+  expect_error("G92 X0\n", 1, 1, "G92 offsets are not supported");
+}
+
+TEST(GcodeLanguage, HomePositions) {
+  // G28 through (5,5,5) to the stored position (0 until G28.1 stores one).
+  Program p = read("G0 X1 Y2 Z3\nG28 X5 Y5\n");
+  ASSERT_EQ(p.blocks.size(), 3u);
+  EXPECT_EQ(p.blocks[1].end, (Vec3{5, 5, 3}));
+  EXPECT_EQ(p.blocks[2].end, (Vec3{0, 0, 3}));  // only the named axes go home
+  p = read("G0 X1 Y2 Z3\nG30.1\nG0 X7\nG30\n");
+  ASSERT_EQ(p.blocks.size(), 3u);
+  EXPECT_EQ(p.blocks[2].end, (Vec3{1, 2, 3}));
+  expect_error("G28 G1 X1 F1\n", 1, 5, "both use the axis words");
+}
+
+TEST(GcodeLanguage, ToolLengthOffsetFromTheTable) {
+  Options o;
+  o.tools = read_tool_table("T1 P1 Z12.5 D6 ;end mill\nT2 P2 Z-1.25\n\n");
+  ASSERT_EQ(o.tools.size(), 2u);
+  const Program p = read("T1 M6\nG43 H1 G0 Z0\nG43 G0 Z1\nG43 H2 Z1\nG49 Z1\n", o);
+  ASSERT_EQ(p.blocks.size(), 5u);  // stop for M6, then four moves
+  EXPECT_DOUBLE_EQ(p.blocks[1].end.z, 12.5);
+  EXPECT_DOUBLE_EQ(p.blocks[2].end.z, 13.5);   // G43 without H: the loaded tool 1
+  EXPECT_DOUBLE_EQ(p.blocks[3].end.z, -0.25);
+  EXPECT_DOUBLE_EQ(p.blocks[4].end.z, 1);
+  try {
+    read("G43 H3\n", o);
+    ADD_FAILURE();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.column(), 5);
+    EXPECT_NE(std::string(e.what()).find("tool 3 is not in the tool table"), std::string::npos);
+  }
+  expect_error("G43 H1\n", 1, 5, "give one with --tool-table");
+  expect_error("G1 H1 X1 F1\n", 1, 4, "H word with no G43");
+  EXPECT_THROW(read_tool_table("T1 P1 Z1\nT1 P2 Z2\n"), Error);
+  EXPECT_THROW(read_tool_table("P2 Z2\n"), Error);
+}
+
+TEST(GcodeLanguage, ArcCentreModesBlockDeleteAndLineEnds) {
+  // G90.1: I J absolute (in the work system); G91.1 (default): relative.
+  Program p = read("G10 L2 P1 X100\nG0 X10 Y0\nG90.1 G3 X0 Y10 I0 J0 F10\nG91.1 G3 X-10 Y0 I0 J-10\n");
+  ASSERT_EQ(p.blocks.size(), 3u);
+  EXPECT_EQ(p.blocks[1].centre, (Vec3{100, 0, 0}));
+  EXPECT_EQ(p.blocks[2].centre, (Vec3{100, 0, 0}));
+  // '/' lines are skipped (block delete on), CR CR LF ends read.
+  p = read("G1 X1 F10\r\r\n/G1 X5\r\r\nG1 Y1\r\r\n");
+  ASSERT_EQ(p.blocks.size(), 2u);
+  EXPECT_EQ(p.blocks[1].end, (Vec3{1, 1, 0}));
+  Options keep;
+  keep.block_delete = false;
+  EXPECT_EQ(read("G1 X1 F10\n/G1 X5\n", keep).blocks.size(), 2u);
+  expect_error("O100 sub\n", 1, 1, "O-words");
+  expect_error("G1 X[1+2] F1\n", 1, 5, "parameter or expression");
+  expect_error("G1 @1 ^2 F1\n", 1, 4, "polar coordinates");
 }
 
 }  // namespace

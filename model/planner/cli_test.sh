@@ -64,7 +64,7 @@ printf 'G21 G0 X10 Y0\nG3 X-10.001 Y0 R10 F600\n' > "$work/semi.ngc"
 
 # Errors: exit 2, one line on stderr, naming the problem.
 printf 'G1 X1 F10\nG2 X10.04 Y0 I5 J0\n' > "$work/radius.ngc"
-printf 'G1 X1 F10\nG1 M3\n' > "$work/word.ngc"
+printf 'G1 X1 F10\nG1 M98\n' > "$work/word.ngc"
 printf 'vmax_x = 6000\nspeed = 3\n' > "$work/bad.cfg"
 printf 'amax_x = -1\n' > "$work/neg.cfg"
 expect_error() {  # want-substring args...
@@ -79,7 +79,7 @@ expect_error() {  # want-substring args...
 expect_error "cannot read '$work/none.ngc'" "$work/none.ngc"
 expect_error "missing argument FILE"
 expect_error "radius.ngc: line 2, column 1: radius to end of arc differs from radius to start: r1=5.0000 mm r2=4.0400 mm" "$work/radius.ngc"
-expect_error "word.ngc: line 2, column 4: unsupported word 'M'" "$work/word.ngc"
+expect_error "word.ngc: line 2, column 4: unsupported M code M98" "$work/word.ngc"
 expect_error "--chord: unknown placement 'd'" "$work/line.ngc" --chord d
 expect_error "--tol: must be > 0" "$work/line.ngc" --tol 0
 expect_error "--cycle: 'fast' is not a number" "$work/line.ngc" --cycle fast

@@ -39,6 +39,14 @@ Segment make_segment(const gcode::Block& b) {
   g.end = b.end;
   g.line = b.line;
   g.rapid = b.motion == gcode::Motion::Rapid;
+  g.exact_stop = b.path == gcode::PathMode::ExactStop;
+  g.blend_tol = b.blend_tol_mm;
+  if (b.is_dwell()) {
+    g.kind = Segment::Kind::Dwell;
+    g.dwell_s = b.dwell_s;
+    g.exact_stop = true;
+    return g;
+  }
   if (!b.is_arc()) {
     g.kind = Segment::Kind::Line;
     g.length = norm(b.end - b.start);
@@ -124,13 +132,13 @@ Vec3 Segment::point(double s, double radial_offset) const {
   if (s <= 0 && radial_offset == 0) return start;
   if (s >= length && radial_offset == 0) return end;
   s = std::clamp(s, 0.0, length);
-  if (kind == Kind::Line) return start + s * dir;
+  if (kind != Kind::Arc) return start + s * dir;
   const UV q = uv_at(s, radial_offset);
   return origin + q.u * u_hat + q.v * v_hat + (s / length) * rise;
 }
 
 Vec3 Segment::tangent(double s) const {
-  if (kind == Kind::Line) return dir;
+  if (kind != Kind::Arc) return dir;
   const double a = alpha_s + sigma * sweep * (s / length);
   const double k = sigma * radius * sweep / length;
   const Vec3 t = (-k * std::sin(a)) * u_hat + (k * std::cos(a)) * v_hat + (1.0 / length) * rise;
@@ -138,13 +146,13 @@ Vec3 Segment::tangent(double s) const {
 }
 
 double Segment::curvature_radius() const {
-  if (kind == Kind::Line) return 0;
+  if (kind != Kind::Arc) return 0;
   const double c = norm(rise) / sweep;
   return (radius * radius + c * c) / radius;
 }
 
 double Segment::distance(const Vec3& p) const {
-  if (kind == Kind::Line) return distance_to_segment(p, start, end);
+  if (kind != Kind::Arc) return distance_to_segment(p, start, end);
   if (!helix()) {
     const Vec3 w = p - origin;
     const Vec3 nn = cross(u_hat, v_hat);

@@ -33,12 +33,15 @@ struct UV {
 };
 
 struct Segment {
-  enum class Kind { Line, Arc };
+  enum class Kind { Line, Arc, Dwell };  // Dwell: at rest at start for dwell_s (0: a stop)
   Kind kind = Kind::Line;
   bool rapid = false;
   Vec3 start, end;
   double length = 0;  // path length, mm
   int line = 0;       // source line of the block
+  double dwell_s = 0;       // Dwell
+  bool exact_stop = false;  // G61/G61.1 (and dwells): at rest at the end
+  double blend_tol = -1;    // G64 P, mm (< 0: the configured default)
 
   // Line.
   Vec3 dir;  // unit

@@ -163,6 +163,7 @@ PlannedSegment plan_segment(const gcode::Block& b, const Config& config, double 
   PlannedSegment ps;
   ps.geom = make_segment(b);
   const Segment& g = ps.geom;
+  if (g.kind == Segment::Kind::Dwell) return ps;  // at rest: v_cap 0, a_t 0
   ps.v_cap = g.rapid ? mc.rapid : b.feed_mm_s;
   ps.cap = g.rapid ? Cap::Rapid : Cap::Feed;
   if (g.kind == Segment::Kind::Line) {
@@ -184,6 +185,7 @@ double junction_limit(const PlannedSegment& s1, const PlannedSegment& s2, const 
                       double amin) {
   const Machine& mc = config.machine;
   const double T = config.cycle_s;
+  if (s1.geom.exact_stop || s2.geom.kind == Segment::Kind::Dwell) return 0;
   double lim = std::min(s1.v_cap, s2.v_cap);
   const double amx = std::max(s1.a_t, s2.a_t);
   const Vec3 t1 = s1.geom.tangent(s1.geom.length), t2 = s2.geom.tangent(0);
@@ -228,6 +230,10 @@ void shape_trapezoid(PlannedSegment& s, double v_start, double v_end) {
   const double L = s.geom.length, a = s.a_t;
   s.v_start = v_start;
   s.v_end = v_end;
+  if (s.geom.kind == Segment::Kind::Dwell) {
+    s.duration = s.geom.dwell_s;
+    return;
+  }
   const double v_peak = std::sqrt((2 * a * L + s.v_start * s.v_start + s.v_end * s.v_end) / 2);
   s.v_cruise = std::max({std::min(s.v_cap, v_peak), s.v_start, s.v_end});
   s.s_acc = (s.v_cruise * s.v_cruise - s.v_start * s.v_start) / (2 * a);
@@ -333,7 +339,7 @@ std::vector<Sample> interpolate(const Plan& plan) {
 double chord_error(const Plan& plan, const Sample& a, const Sample& b) {
   if (a.seg == b.seg) {
     const Segment& g = plan.segs[a.seg].geom;
-    if (g.kind == Segment::Kind::Line) return std::max(g.distance(a.p), g.distance(b.p));
+    if (g.kind != Segment::Kind::Arc) return std::max(g.distance(a.p), g.distance(b.p));
     if (!g.helix()) {
       const Vec3 nn = cross(g.u_hat, g.v_hat);
       auto uv = [&](Vec3 p) {

@@ -348,6 +348,32 @@ TEST(Verdict, LimitExceededOnlyBeyondTheStatedTolerance) {
   EXPECT_LE(kLimitRelTol, 1e-6);
 }
 
+// G4 P: the planner comes to rest, waits P seconds at the point, goes on.
+TEST(Dwell, ComesToRestAndWaits) {
+  const Plan with = plan_text("G1 X10 F600\nG4 P0.5\nG1 X20\n");
+  const Plan without = plan_text("G1 X10 F600\nG1 X20\n");
+  ASSERT_EQ(with.segs.size(), 3u);
+  EXPECT_EQ(with.segs[0].v_end, 0);
+  EXPECT_EQ(with.segs[2].v_start, 0);
+  EXPECT_DOUBLE_EQ(with.segs[1].duration, 0.5);
+  EXPECT_GT(without.segs[0].v_end, 0);  // collinear: no stop without the dwell
+  EXPECT_GE(with.total_time, without.total_time + 0.5);
+  // The samples stand at X10 for the whole dwell.
+  int at_rest = 0;
+  for (const Sample& s : interpolate(with))
+    if (std::fabs(s.p.x - 10) < 1e-12) ++at_rest;
+  EXPECT_GE(at_rest, 500);
+  EXPECT_LE(at_rest, 502);
+}
+
+// G61: exact stop at the end of every block, even between collinear lines.
+TEST(PathControl, ExactStopStopsAtEveryCorner) {
+  const Plan p = plan_text("G61 G1 X10 F6000\nX20\nX30\n");
+  for (const auto& s : p.segs) EXPECT_EQ(s.v_end, 0);
+  const Plan b = plan_text("G64 G1 X10 F6000\nX20\nX30\n");
+  EXPECT_GT(b.segs[0].v_end, 0);
+}
+
 TEST(Junctions, CollinearLinesKeepTheFeed) {
   const Plan p = plan_text("G1 X10 F6000\nX20\nX30\n");
   ASSERT_EQ(p.segs.size(), 3u);

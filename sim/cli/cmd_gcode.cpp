@@ -22,11 +22,16 @@ using planner::Config;
 
 const char* kHelp =
     "usage: contour gcode FILE [options]\n"
-    "Runs a G-code program (G0-G3, G17-G19, G20/G21, G90/G91; 3D arcs as paper B)\n"
+    "Runs a G-code program (RS274/NGC as LinuxCNC reads it, the subset in\n"
+    "model/gcode/gcode.hpp; 3D arcs as paper B; M S T G4 G43 G54.. as events)\n"
     "through paper B's planner: trapezoidal acc/dec planned on the path, one chord per\n"
     "control cycle within the tolerance. Defaults are paper B's conditions.\n"
     "\noptions:\n"
-    "  --format F        summary (default) or json (total time as \"total_time_s\")\n"
+    "  --format F        summary (default), json (total time as \"total_time_s\"), or moves:\n"
+    "                    the reader's output only, one line per move (RAPID|LINE feed x y z,\n"
+    "                    ARC feed plane CW|CCW x y z cx cy cz), DWELL s, STOP, EVENT code\n"
+    "                    and END, machine mm and mm/min\n"
+    "  --tool-table FILE tool lengths for G43 H, LinuxCNC's format ('T1 P1 Z12.5'), Z in mm\n"
     "  --accel A         acceleration limit of every axis, mm/min^2 (default 3528000 = 0.1 g)\n"
     "  --cycle MS        control cycle, ms (default 1, at most 1000)\n"
     "  --tol UM          chord tolerance, um (default 0.02)\n"
@@ -112,6 +117,7 @@ std::string json_string(const std::string& s) {
 }
 
 const char* kind_name(const planner::Segment& g) {
+  if (g.kind == planner::Segment::Kind::Dwell) return g.dwell_s > 0 ? "dwell" : "stop";
   if (g.kind == planner::Segment::Kind::Line) return g.rapid ? "G0 line" : "G1 line";
   if (g.arc3d) return "3D arc";
   if (g.helix()) return "helix";
@@ -245,6 +251,32 @@ Config parse_config(const Args& a) {
   return c;
 }
 
+std::string read_text(const std::string& file, const std::string& what) {
+  require_regular_file(file, what);
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw UsageError(what + "cannot read '" + file + "'");
+  std::stringstream buf;
+  buf << in.rdbuf();
+  return buf.str();
+}
+
+gcode::ToolTable read_tool_table(const std::string& file) {
+  try {
+    return gcode::read_tool_table(read_text(file, "--tool-table: "));
+  } catch (const gcode::Error& e) {
+    throw UsageError("--tool-table: " + file + ": " + e.what());
+  }
+}
+
+gcode::Program read_program(const std::string& file, const gcode::Options& o) {
+  const std::string text = read_text(file, "");
+  try {
+    return gcode::read(text, o);
+  } catch (const gcode::Error& e) {
+    throw UsageError(file + ": " + e.what());
+  }
+}
+
 // What the command line asks for, checked.
 struct Request {
   std::string file, format;
@@ -252,6 +284,7 @@ struct Request {
   bool pulses = false;        // print the two-stage step stream
   double steps_per_mm = 1000;
   std::string engine;         // the stage-2 engine of --pulses
+  gcode::Options read;        // the tool table
 };
 
 Request parse_request(const Args& a) {
@@ -259,9 +292,10 @@ Request parse_request(const Args& a) {
   a.expect_positional({"FILE"});
   q.file = a.positional()[0];
   q.format = a.option_or("format", "summary");
-  if (q.format != "summary" && q.format != "json")
-    throw UsageError("--format: unknown format '" + q.format + "' (one of summary, json)");
+  if (q.format != "summary" && q.format != "json" && q.format != "moves")
+    throw UsageError("--format: unknown format '" + q.format + "' (one of summary, json, moves)");
   q.config = parse_config(a);
+  if (auto t = a.option("tool-table")) q.read.tools = read_tool_table(*t);
   q.pulses = a.flag("pulses");
   if (!q.pulses && a.option("engine")) throw UsageError("--engine needs --pulses");
   if (!q.pulses && a.option("steps-per-mm")) throw UsageError("--steps-per-mm needs --pulses");
@@ -272,19 +306,6 @@ Request parse_request(const Args& a) {
   if (q.pulses && !planner::pulse_stages().count(q.engine))
     throw UsageError(unknown_engine(q.engine, stage_names()));
   return q;
-}
-
-std::vector<gcode::Block> read_program(const std::string& file) {
-  require_regular_file(file, "");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw UsageError("cannot read '" + file + "'");
-  std::stringstream buf;
-  buf << in.rdbuf();
-  try {
-    return gcode::parse(buf.str());
-  } catch (const gcode::Error& e) {
-    throw UsageError(file + ": " + e.what());
-  }
 }
 
 // Plans the program; refuses one that runs more cycles than fit in memory.
@@ -332,7 +353,7 @@ bool limits_respected(const planner::Report& r) {
   return all_ok;
 }
 
-void print_json(const Request& q, const planner::Plan& plan, const planner::Report& r) {
+void print_json(const Request& q, const gcode::Program& prog, const planner::Plan& plan, const planner::Report& r) {
   const Config& c = q.config;
   std::ostringstream o;
   o.precision(10);
@@ -357,8 +378,17 @@ void print_json(const Request& q, const planner::Plan& plan, const planner::Repo
       << ", \"v_end_mm_min\": " << s.v_end * 60 << ", \"accel_mm_s2\": " << s.a_t << ", \"cap\": \""
       << planner::cap_name(s.cap) << "\"}";
   }
-  o << "], \"all_ok\": " << (limits_respected(r) ? "true" : "false") << "}\n";
+  o << "], \"events\": [";
+  for (std::size_t k = 0; k < prog.events.size(); ++k)
+    o << (k ? ", " : "") << "{\"line\": " << prog.events[k].line << ", \"code\": " << json_string(prog.events[k].code)
+      << "}";
+  o << "], \"program_end\": " << (prog.ended ? "true" : "false") << ", \"all_ok\": " << (limits_respected(r) ? "true" : "false") << "}\n";
   std::fputs(o.str().c_str(), stdout);
+}
+
+void print_events(const gcode::Program& prog) {
+  std::printf("events (%zu):\n", prog.events.size());
+  for (const auto& e : prog.events) std::printf("  line %-4d %s\n", e.line, e.code.c_str());
 }
 
 void print_summary(const Request& q, const planner::Plan& plan, const planner::Report& r) {
@@ -382,15 +412,52 @@ void print_summary(const Request& q, const planner::Plan& plan, const planner::R
                 s.duration, planner::cap_name(s.cap));
 }
 
+// --format moves: the reader's output, one line per move, dwell and event,
+// in machine mm and mm/min (what the rs274 oracle test compares).
+void print_moves(const gcode::Program& prog) {
+  std::string text;
+  char b[320];
+  std::size_t e = 0;
+  auto events_before = [&](std::size_t k) {
+    for (; e < prog.events.size() && prog.events[e].before <= k; ++e)
+      text += "EVENT " + prog.events[e].code + "\n";
+  };
+  for (std::size_t k = 0; k < prog.blocks.size(); ++k) {
+    events_before(k);
+    const gcode::Block& m = prog.blocks[k];
+    const double f = m.feed_mm_s * 60;
+    if (m.is_dwell()) {
+      std::snprintf(b, sizeof b, "%s %.6f\n", m.dwell_s > 0 ? "DWELL" : "STOP", m.dwell_s);
+    } else if (!m.is_arc()) {
+      std::snprintf(b, sizeof b, "%s %.6f %.6f %.6f %.6f\n", m.motion == gcode::Motion::Rapid ? "RAPID" : "LINE", f,
+                    m.end.x, m.end.y, m.end.z);
+    } else {
+      std::snprintf(b, sizeof b, "ARC %.6f %s %s %.6f %.6f %.6f %.6f %.6f %.6f\n", f, gcode::plane_name(m.plane),
+                    m.motion == gcode::Motion::ArcCW ? "CW" : "CCW", m.end.x, m.end.y, m.end.z, m.centre.x,
+                    m.centre.y, m.centre.z);
+    }
+    text += b;
+  }
+  events_before(prog.blocks.size());
+  if (prog.ended) text += "END\n";
+  std::fputs(text.c_str(), stdout);
+}
+
 int run_gcode_command(const std::vector<std::string>& argv) {
   const Args a(argv, {"pulses"},
-               {"format", "accel", "cycle", "tol", "chord", "config", "csv", "svg", "steps-per-mm", "engine"});
+               {"format", "accel", "cycle", "tol", "chord", "config", "csv", "svg", "steps-per-mm", "engine",
+                "tool-table"});
   if (a.help()) {
     std::printf(kHelp, stage_names().c_str());
     return 0;
   }
   const Request q = parse_request(a);
-  const planner::Plan plan = plan_program(q.file, read_program(q.file), q.config);
+  const gcode::Program prog = read_program(q.file, q.read);
+  if (q.format == "moves") {
+    print_moves(prog);
+    return 0;
+  }
+  const planner::Plan plan = plan_program(q.file, prog.blocks, q.config);
   const auto samples = planner::interpolate(plan);
   if (q.pulses) return print_pulses(q, samples);
 
@@ -399,9 +466,10 @@ int run_gcode_command(const std::vector<std::string>& argv) {
   int svg_files = 0;
   if (auto d = a.option("svg")) svg_files = write_svgs(*d, q.file, plan, samples);
   if (q.format == "json") {
-    print_json(q, plan, r);
+    print_json(q, prog, plan, r);
   } else {
     print_summary(q, plan, r);
+    if (!prog.events.empty()) print_events(prog);
     if (svg_files) std::printf("svg            %d files in %s\n", svg_files, a.option("svg")->c_str());
   }
   return limits_respected(r) ? 0 : 1;
