@@ -35,6 +35,9 @@ const char* kHelp =
     "  --accel A         acceleration limit of every axis, mm/min^2 (default 3528000 = 0.1 g)\n"
     "  --cycle MS        control cycle, ms (default 1, at most 1000)\n"
     "  --tol UM          chord tolerance, um (default 0.02)\n"
+    "  --blend-tol UM    corner tolerance of G64 without P, um (default 10): a corner\n"
+    "                    between feed moves is passed at speed when the chord that cuts\n"
+    "                    it stays within this (G64 P sets it per block; G61 stops)\n"
     "  --chord M         chord placement, paper B Fig. 1: a inside, b outside,\n"
     "                    c inside and outside (default c)\n"
     "  --config FILE     machine limits, lines 'key = value' ('#' comments): vmax_x vmax_y\n"
@@ -48,7 +51,8 @@ const char* kHelp =
     "                    drives the 3-axis linear interpolator, pulses spread over the cycle\n"
     "  --steps-per-mm N  with --pulses: steps per mm (default 1000)\n"
     "  --engine E        with --pulses: stage-2 engine, %s (default model)\n"
-    "Exit status: 0 all limits respected, 1 a limit or the tolerance was exceeded,\n"
+    "Exit status: 0 all limits respected, 1 a limit or a tolerance was exceeded by more\n"
+    "than 1e-6 relative (floating-point rounding is not an excess),\n"
     "2 bad input (one line on stderr naming the problem).\n";
 
 std::string stage_names() {
@@ -247,6 +251,11 @@ Config parse_config(const Args& a) {
     if (c.cycle_s > kMaxCycleS) throw UsageError("--cycle: at most 1000 ms (got '" + *v + "')");
   }
   if (auto v = a.option("tol")) c.tol_mm = positive(*v, "--tol") / 1000;
+  if (auto v = a.option("blend-tol")) {
+    c.blend_tol_mm = parse_real(*v, "--blend-tol") / 1000;
+    if (!(c.blend_tol_mm >= 0) || !std::isfinite(c.blend_tol_mm))
+      throw UsageError("--blend-tol: must be >= 0 (got '" + *v + "')");
+  }
   if (auto v = a.option("chord")) c.chord = parse_chord(*v);
   return c;
 }
@@ -348,7 +357,7 @@ int print_pulses(const Request& q, const std::vector<planner::Sample>& samples) 
 const char* const kAxisNames[] = {"X", "Y", "Z"};
 
 bool limits_respected(const planner::Report& r) {
-  bool all_ok = r.tol_ok;
+  bool all_ok = r.tol_ok && r.blend_ok;
   for (const auto& ax : r.axes) all_ok = all_ok && ax.v_ok && ax.a_ok;
   return all_ok;
 }
@@ -361,7 +370,9 @@ void print_json(const Request& q, const gcode::Program& prog, const planner::Pla
     << ", \"cycle_s\": " << c.cycle_s << ", \"total_time_s\": " << r.total_time_s
     << ", \"tolerance_mm\": " << c.tol_mm << ", \"chord_method\": \"" << planner::chord_name(c.chord)
     << "\", \"peak_feed_mm_min\": " << r.peak_feed * 60 << ", \"max_chord_error_mm\": " << r.max_chord_error
-    << ", \"tolerance_ok\": " << (r.tol_ok ? "true" : "false") << ", \"axes\": {";
+    << ", \"tolerance_ok\": " << (r.tol_ok ? "true" : "false") << ", \"blend_tolerance_mm\": " << c.blend_tol_mm
+    << ", \"max_blend_error_mm\": " << r.max_blend_error << ", \"blend_ok\": " << (r.blend_ok ? "true" : "false")
+    << ", \"axes\": {";
   for (int i = 0; i < 3; ++i) {
     const auto& ax = r.axes[i];
     o << (i ? ", " : "") << "\"" << kAxisNames[i] << "\": {\"peak_velocity_mm_min\": " << ax.peak_v * 60
@@ -399,6 +410,8 @@ void print_summary(const Request& q, const planner::Plan& plan, const planner::R
   std::printf("peak feed      %.1f mm/min\n", r.peak_feed * 60);
   std::printf("max chord err  %.4f um (tolerance %g um, chord method %s): %s\n", r.max_chord_error * 1000,
               c.tol_mm * 1000, planner::chord_name(c.chord), r.tol_ok ? "ok" : "EXCEEDED");
+  std::printf("max corner err %.4f um (blend tolerance %g um unless G64 P): %s\n", r.max_blend_error * 1000,
+              c.blend_tol_mm * 1000, r.blend_ok ? "ok" : "EXCEEDED");
   std::printf("axis  peak v (mm/min)  limit        peak a (mm/min^2)  limit\n");
   for (int i = 0; i < 3; ++i) {
     const auto& ax = r.axes[i];
@@ -445,8 +458,8 @@ void print_moves(const gcode::Program& prog) {
 
 int run_gcode_command(const std::vector<std::string>& argv) {
   const Args a(argv, {"pulses"},
-               {"format", "accel", "cycle", "tol", "chord", "config", "csv", "svg", "steps-per-mm", "engine",
-                "tool-table"});
+               {"format", "accel", "cycle", "tol", "blend-tol", "chord", "config", "csv", "svg", "steps-per-mm",
+                "engine", "tool-table"});
   if (a.help()) {
     std::printf(kHelp, stage_names().c_str());
     return 0;
