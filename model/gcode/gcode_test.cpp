@@ -182,7 +182,7 @@ TEST(GcodeErrors, EveryErrorNamesLineAndColumn) {
   expect_error("G1 X1 F1 )\n", 1, 10, "')' without a matching '('");
   expect_error("G1 X1 F1 N5\n", 1, 10, "line number N must be the first word");
   expect_error("N1.5 G0 X1\n", 1, 1, "whole number");
-  expect_error("G1 X1 F1 #\n", 1, 10, "parameters ('#') are not supported");
+  expect_error("G1 X1 F1 #\n", 1, 11, "expression ends early");
   expect_error("G1 X1 F1 $\n", 1, 10, "unexpected character '$'");
   expect_error("%x\n", 1, 2, "text after '%'");
   expect_error("G1 X1 I2 F10\n", 1, 7, "only allowed with G2/G3");
@@ -331,8 +331,55 @@ TEST(GcodeLanguage, ArcCentreModesBlockDeleteAndLineEnds) {
   keep.block_delete = false;
   EXPECT_EQ(read("G1 X1 F10\n/G1 X5\n", keep).blocks.size(), 2u);
   expect_error("O100 sub\n", 1, 1, "O-words");
-  expect_error("G1 X[1+2] F1\n", 1, 5, "parameter or expression");
   expect_error("G1 @1 ^2 F1\n", 1, 4, "polar coordinates");
+}
+
+TEST(GcodeParameters, NumberedNamedAndExpressions) {
+  const Program p = read(
+      "#1 = 10 #<depth> = -2.5 #<_cut_feed>=[100*3]\n"
+      "G1 X#1 Y[#1 / 4 + 1] Z#<depth> F#<_cut_feed>\n"
+      "#2 = [2 ** 3 MOD 5] #3 = [1 + 2 * 3 - 4 / 2]\n"
+      "G0 X#2 Y#3 Z[SIN[30] * 2]\n"
+      "#4 = ATAN[1]/[1] #5 = [SQRT[16] + ABS[-2] + FIX[2.7] + FUP[2.2] + ROUND[2.5]]\n"
+      "G0 X#4 Y#5 Z[[3 GT 2] + [2 EQ 2] + [1 AND 0] + [1 OR 0] + [1 XOR 1]]\n"
+      "#1 = 1 #6 = #1\n"  // #6 gets the old #1: settings apply after the line
+      "G0 X#6 Y-#1 Z-[#1 + 1]\n"
+      "#[2 + 5] = EXISTS[#<depth>] #8 = EXISTS[#<nope>] #9 = ##1\n"
+      "G0 X#7 Y#8 Z#9\n");
+  ASSERT_EQ(p.blocks.size(), 5u);
+  EXPECT_EQ(p.blocks[0].end, (Vec3{10, 3.5, -2.5}));
+  EXPECT_DOUBLE_EQ(p.blocks[0].feed_mm_s, 5);
+  EXPECT_EQ(p.blocks[1].end.x, 3);  // 2 ** 3 = 8, MOD 5 = 3
+  EXPECT_EQ(p.blocks[1].end.y, 5);
+  EXPECT_NEAR(p.blocks[1].end.z, 1, 1e-12);
+  EXPECT_NEAR(p.blocks[2].end.x, 45, 1e-12);
+  EXPECT_EQ(p.blocks[2].end.y, 4 + 2 + 2 + 3 + 3);
+  EXPECT_EQ(p.blocks[2].end.z, 3);
+  EXPECT_EQ(p.blocks[3].end, (Vec3{10, -1, -2}));
+  EXPECT_EQ(p.blocks[4].end, (Vec3{1, 0, 1}));  // #9 = #[#1] = #1 = 1
+}
+
+TEST(GcodeParameters, ErrorsNameWhere) {
+  expect_error("G1 X[1/0] F1\n", 1, 7, "division by zero");
+  expect_error("G1 X#<nope> F1\n", 1, 5, "named parameter #<nope> is not set");
+  expect_error("G1 X[SQRT[-1]] F1\n", 1, 6, "SQRT of -1.0000 is undefined");
+  expect_error("G1 X[1 + 2 F1\n", 1, 12, "expected ']'");
+  expect_error("#5400 = 1\n", 1, 2, "system parameter #5400 is not supported");
+  expect_error("#<_feed> = 1\n", 1, 2, "cannot assign to read-only parameter #<_feed>");
+  expect_error("G0 X#<_x>\n", 1, 5, "predefined parameter #<_x> is not supported");
+  expect_error("#1.5 = 1\n", 1, 2, "whole number");
+  expect_error("#1 2\n", 1, 4, "expected '='");
+  expect_error("G1 X[FOO[1]] F1\n", 1, 6, "unknown function 'FOO'");
+  std::string deep = "G1 X";
+  for (int k = 0; k < 100; ++k) deep += "[";
+  deep += "1";
+  for (int k = 0; k < 100; ++k) deep += "]";
+  try {
+    read(deep + " F1\n");
+    ADD_FAILURE();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("nested deeper than 64"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -102,8 +102,12 @@ class Interpreter {
   // Runs one line; false after M2/M30.
   bool line(std::string_view text, int lineno) {
     line_ = lineno;
-    const LineWords w = read_words(text, lineno);
-    if (w.block_delete && opt_.block_delete) return true;
+    if (block_deleted(text)) return true;
+    const LineWords w = read_words(text, lineno, &params_);
+    for (const Assignment& a : w.assignments) {  // after the whole line is read
+      if (a.number) params_.numbered[a.number] = a.value;
+      else params_.named[a.name] = a.value;
+    }
     const LineCodes c = classify(w);
     check_letters(w, c);
     settings_before_motion(w, c);
@@ -112,6 +116,13 @@ class Interpreter {
   }
 
   Program take() { return std::move(prog_); }
+
+  // A '/' line is skipped unread when block delete is on (its words may
+  // use parameters that are not set).
+  bool block_deleted(std::string_view text) const {
+    const auto first = text.find_first_not_of(" \t\r");
+    return opt_.block_delete && first != std::string_view::npos && text[first] == '/';
+  }
 
  private:
   [[noreturn]] void fail(int col, const std::string& problem) const { throw Error(line_, col, problem); }
@@ -280,6 +291,7 @@ class Interpreter {
   Vec3 pos_;
   int line_ = 0;
   Program prog_;
+  Params params_;
 };
 
 void Interpreter::motion_and_nonmodal(const LineWords& w, const LineCodes& c) {
