@@ -258,8 +258,8 @@ TEST(GcodeLanguage, DwellFeedModeCutterCompAndPathControl) {
   expect_error("G1 X1 F1\nG41 D1 X2\n", 2, 1, "cutter radius compensation (G41/G42) is not supported");
   expect_error("G42 X2\n", 1, 1, "G41/G42");
   expect_error("G4 P-1\n", 1, 4, "dwell P must be >= 0");
-  expect_error("G1 X1 F1 P2\n", 1, 10, "P word with no G4, G10, G64 or arc");
-  expect_error("G81 X1 Y1 Z-1 R1 F10\n", 1, 1, "canned cycle G81 is not supported");
+  expect_error("G1 X1 F1 P2\n", 1, 10, "P word with no G4, G10, G64, G82, G89 or arc");
+  expect_error("G84 X1 Y1 Z-1 R1 F10\n", 1, 1, "cycle G84 is not supported");
 }
 
 TEST(GcodeLanguage, WorkOffsetsAndMachineCoordinates) {
@@ -380,6 +380,41 @@ TEST(GcodeParameters, ErrorsNameWhere) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("nested deeper than 64"), std::string::npos) << e.what();
   }
+}
+
+// Canned cycles as LinuxCNC expands them (rs274 agrees on the corpus).
+std::string moves(const Program& p) {
+  std::string s;
+  char b[96];
+  for (const Block& m : p.blocks) {
+    if (m.is_dwell()) std::snprintf(b, sizeof b, "D%g ", m.dwell_s);
+    else std::snprintf(b, sizeof b, "%s%g,%g,%g ", m.motion == Motion::Rapid ? "R" : "F", m.end.x, m.end.y, m.end.z);
+    s += b;
+  }
+  return s;
+}
+
+TEST(GcodeCycles, DrillDwellPeckReamAndRetractModes) {
+  // G98 from Z10: to X Y at 10, down to R, feed to Z, back to 10.
+  EXPECT_EQ(moves(read("G0 Z10\nG98 G81 X5 Y5 Z-3 R2 F100\nX10\n")),
+            "R0,0,10 R5,5,10 R5,5,2 F5,5,-3 R5,5,10 R10,5,10 R10,5,2 F10,5,-3 R10,5,10 ");
+  // G99 from below R: first straight up to R; retract to R.
+  EXPECT_EQ(moves(read("G99 G82 X5 Y0 Z-3 R2 P0.5 F100\n")), "R0,0,2 R5,0,2 F5,0,-3 D0.5 R5,0,2 ");
+  // G83: back to R after each peck, rapid to 0.254 mm above the last depth.
+  EXPECT_EQ(moves(read("G0 Z5\nG99 G83 X0 Y0 Z-2 R1 Q1.5 F100\n")),
+            "R0,0,5 R0,0,1 F0,0,-0.5 R0,0,1 R0,0,-0.246 F0,0,-2 R0,0,1 ");
+  // G73: 0.254 mm chip-break retract.
+  EXPECT_EQ(moves(read("G0 Z5\nG99 G73 X0 Y0 Z-2 R1 Q1.5 F100\n")),
+            "R0,0,5 R0,0,1 F0,0,-0.5 R0,0,-0.246 F0,0,-2 R0,0,1 ");
+  // G85 feeds out to R, G89 dwells and feeds out to the clear level.
+  EXPECT_EQ(moves(read("G0 Z5\nG98 G85 X0 Y0 Z-2 R1 F100\n")), "R0,0,5 R0,0,1 F0,0,-2 F0,0,1 R0,0,5 ");
+  EXPECT_EQ(moves(read("G0 Z5\nG98 G89 X0 Y0 Z-2 R1 P1 F100\n")), "R0,0,5 R0,0,1 F0,0,-2 D1 F0,0,5 ");
+  expect_error("G81 X1 Y1 Z-2 F100\n", 1, 1, "G81 needs R");
+  expect_error("G83 X1 Y1 Z-2 R1 F100\n", 1, 1, "G83 needs Q");
+  expect_error("G81 X1 Y1 Z3 R2 F100\n", 1, 1, "the bottom Z is above the retract plane R");
+  expect_error("G91 G81 X1 Y1 Z-3 R2 F100\n", 1, 5, "incremental mode (G91) are not supported");
+  expect_error("G18 G81 X1 Y1 Z-3 R2 F100\n", 1, 5, "G17 plane only");
+  expect_error("G81 X1 Y1 Z-3 R2 L3 F100\n", 1, 18, "repeats L other than 1");
 }
 
 }  // namespace

@@ -39,6 +39,7 @@ const char* const kGroupNames[kGroups] = {"non-modal", "motion", "plane", "dista
 int g_group(int c10, std::string& refused) {
   switch (c10) {
     case 0: case 10: case 20: case 30: case 800: return kMotion;
+    case 730: case 810: case 820: case 830: case 850: case 890: return kMotion;  // canned cycles
     case 40: case 100: case 280: case 281: case 300: case 301: case 530: return kNonModal;
     case 170: case 180: case 190: return kPlane;
     case 200: case 210: return kUnits;
@@ -53,8 +54,8 @@ int g_group(int c10, std::string& refused) {
     case 410: case 420: case 411: case 421: refused = "cutter radius compensation (G41/G42) is not supported"; break;
     case 930: refused = "inverse time feed (G93) is not supported: use G94 (units per minute)"; break;
     case 950: refused = "feed per revolution (G95) is not supported: use G94 (units per minute)"; break;
-    case 730: case 810: case 820: case 830: case 850: case 890:
-      refused = "canned cycle " + gname(c10) + " is not supported";
+    case 740: case 760: case 840: case 860: case 870: case 880: case 331: case 330:
+      refused = "cycle " + gname(c10) + " is not supported (G73 G81 G82 G83 G85 G89 are)";
       break;
     case 920: case 921: case 922: case 923: refused = "G92 offsets are not supported (use G10 L2/L20)"; break;
     default:
@@ -93,6 +94,12 @@ struct State {
   Vec3 g28, g30;                   // stored positions, machine mm
   PathMode path = PathMode::Blend;
   double blend_tol = -1;           // mm; < 0: no P
+  int cycle = 0;                   // the canned cycle in effect (81 ...), 0: none
+  bool retract_to_r = false;       // G99 (else G98: the Z before the cycle block)
+  double cycle_r = 0, cycle_z = 0; // sticky R and Z, machine mm
+  double cycle_q = 0, cycle_p = 0; // sticky Q (mm) and P (s)
+  bool cycle_seen = false;         // a cycle block since the mode was entered
+  std::optional<double> cycle_il;  // the initial level: Z when the series of cycles began
 };
 
 class Interpreter {
@@ -177,12 +184,14 @@ class Interpreter {
       if (w[l]) fail(w[l]->column, std::string("unsupported word '") + l + "'");
     const int nm = c.g[kNonModal] ? c.g10[kNonModal] : -1;
     if (w['H'] && c.g10[kToolLength] != 430) fail(w['H']->column, "H word with no G43");
-    if (w['L'] && nm != 100) fail(w['L']->column, "L word with no G10");
-    if (w['Q'] && c.g10[kPathControl] != 640) fail(w['Q']->column, "Q word with no G64");
+    const int cyc = c.g[kMotion] ? (c.g10[kMotion] > 30 && c.g10[kMotion] != 800 ? c.g10[kMotion] / 10 : 0) : st_.cycle;
+    if (w['L'] && nm != 100 && !cyc) fail(w['L']->column, "L word with no G10 or canned cycle");
+    if (w['Q'] && c.g10[kPathControl] != 640 && cyc != 73 && cyc != 83)
+      fail(w['Q']->column, "Q word with no G64, G73 or G83");
     const bool arc_line = c.g[kMotion] ? (c.g10[kMotion] == 20 || c.g10[kMotion] == 30)
                                        : (st_.motion == Motion::ArcCW || st_.motion == Motion::ArcCCW);
-    if (w['P'] && nm != 40 && nm != 100 && c.g10[kPathControl] != 640 && !arc_line)
-      fail(w['P']->column, "P word with no G4, G10, G64 or arc");
+    if (w['P'] && nm != 40 && nm != 100 && c.g10[kPathControl] != 640 && !arc_line && cyc != 82 && cyc != 89)
+      fail(w['P']->column, "P word with no G4, G10, G64, G82, G89 or arc");
   }
 
   void settings_before_motion(const LineWords& w, const LineCodes& c) {
@@ -239,6 +248,7 @@ class Interpreter {
     if (c.g[kPathControl]) path_control(w, c);
     if (c.g[kDistance]) st_.incremental = c.g10[kDistance] == 910;
     if (c.g[kArcDistance]) st_.arc_absolute = c.g10[kArcDistance] == 901;
+    if (c.g[kRetract]) st_.retract_to_r = c.g10[kRetract] == 990;
   }
 
   void tool_length(const LineWords& w, const LineCodes& c) {
@@ -285,6 +295,12 @@ class Interpreter {
   Vec3 end_point(const LineWords& w, bool machine) const;
   void push_move(Block& b, const LineWords& w);
   bool stop_words(const LineCodes& c);
+  void cycle(const LineWords& w, int col);
+  void cycle_words(const LineWords& w, int col);
+  void rapid_to(Vec3 p, int col);
+  void feed_to(Vec3 p, int col);
+  void cycle_holes(int col, double clear);
+  void peck(int col, double clear);
 
   const Options& opt_;
   State st_;
@@ -302,8 +318,12 @@ void Interpreter::motion_and_nonmodal(const LineWords& w, const LineCodes& c) {
     fail(c.g[kMotion]->column, gname(c.g10[kMotion]) + " and " + gname(nm) + " in one line both use the axis words");
   if (c.g[kMotion]) {
     const int c10 = c.g10[kMotion];
-    if (c10 == 800) st_.motion.reset();
+    if (c10 / 10 != st_.cycle) st_.cycle_seen = false;
+    if (c10 <= 30 || c10 == 800) st_.cycle_il.reset();
+    st_.cycle = 0;
+    if (c10 == 800 || c10 > 30) st_.motion.reset();
     else st_.motion = static_cast<Motion>(c10 / 10);
+    if (c10 > 30 && c10 != 800) st_.cycle = c10 / 10;
   }
   if (nm == 100) g10(w, ncol);
   else if (nm == 280 || nm == 300) go_home(w, nm, ncol);
@@ -382,6 +402,7 @@ void Interpreter::motion(const LineWords& w, const LineCodes& c, bool machine) {
     if (machine) fail(c.g[kNonModal]->column, "G53 with no axis words");
     return;
   }
+  if (st_.cycle) return cycle(w, col);
   if (!st_.motion) fail(col, "axis word with no motion mode in effect (give G0, G1, G2 or G3)");
   const Motion m = *st_.motion;
   if (machine && (m != Motion::Rapid && m != Motion::Line))
@@ -415,6 +436,111 @@ void Interpreter::motion(const LineWords& w, const LineCodes& c, bool machine) {
     make_arc(b, aw, st_.inches, line_);
   }
   push_move(b, w);
+}
+
+void Interpreter::rapid_to(Vec3 p, int col) {
+  Block b;
+  b.motion = Motion::Rapid;
+  b.start = pos_;
+  b.end = p;
+  b.column = col;
+  push_move(b, LineWords{});
+}
+
+void Interpreter::feed_to(Vec3 p, int col) {
+  Block b;
+  b.motion = Motion::Line;
+  b.start = pos_;
+  b.end = p;
+  b.column = col;
+  b.feed_mm_s = st_.feed_mm_s;
+  push_move(b, LineWords{});
+}
+
+// The sticky cycle words of a line (R and Z absolute, in machine mm).
+void Interpreter::cycle_words(const LineWords& w, int col) {
+  const std::string g = "G" + std::to_string(st_.cycle);
+  if (st_.incremental) fail(col, "canned cycles in incremental mode (G91) are not supported");
+  if (st_.plane != Plane::XY) fail(col, "canned cycles are supported in the G17 plane only");
+  if (st_.feed_mm_s <= 0) fail(col, g + " with no feed rate: set F");
+  if (w['L'] && w['L']->value != 1) fail(w['L']->column, "cycle repeats L other than 1 are not supported");
+  if (w['R']) st_.cycle_r = to_machine(2, w['R']->value);
+  if (w['Z']) st_.cycle_z = to_machine(2, w['Z']->value);
+  if (w['Q']) {
+    if (!(w['Q']->value > 0)) fail(w['Q']->column, g + " Q (the peck) must be > 0");
+    st_.cycle_q = w['Q']->value * unit();
+  }
+  if (w['P']) {
+    if (w['P']->value < 0) fail(w['P']->column, g + " P (the dwell) must be >= 0 s");
+    st_.cycle_p = w['P']->value;
+  }
+  if (st_.cycle_z > st_.cycle_r) fail(col, g + ": the bottom Z is above the retract plane R");
+  if ((st_.cycle == 73 || st_.cycle == 83) && !(st_.cycle_q > 0)) fail(col, g + " needs Q (the peck)");
+}
+
+// A canned cycle at the line's X Y, with LinuxCNC's moves (absolute mode):
+// when the initial level (Z when the series of cycles began) is below R,
+// first rapid straight up to R; then rapid to X Y at the current Z if it
+// is above R (and down to R), else at the clear level (and down to R if it
+// is above); the cycle; the clear level is R (G99) or the initial level
+// (G98, raised to R if below).
+void Interpreter::cycle(const LineWords& w, int col) {
+  const std::string g = "G" + std::to_string(st_.cycle);
+  if (!st_.cycle_seen) {
+    if (!w['R']) fail(col, g + " needs R (the retract plane) when the cycle begins");
+    if (!w['Z']) fail(col, g + " needs Z (the bottom) when the cycle begins");
+    if ((st_.cycle == 82 || st_.cycle == 89) && !w['P']) fail(col, g + " needs P (the dwell) when the cycle begins");
+    if ((st_.cycle == 73 || st_.cycle == 83) && !w['Q']) fail(col, g + " needs Q (the peck) when the cycle begins");
+  }
+  st_.cycle_seen = true;
+  cycle_words(w, col);
+  if (!st_.cycle_il) st_.cycle_il = pos_.z;
+  double old = *st_.cycle_il, current = pos_.z;
+  const double r = st_.cycle_r;
+  if (old < r) {
+    rapid_to({pos_.x, pos_.y, r}, col);
+    old = current = r;
+  }
+  const double clear = st_.retract_to_r ? r : old;
+  const Vec3 xy = end_point(w, false);
+  if (current > r) {
+    rapid_to({xy.x, xy.y, current}, col);
+  } else {
+    rapid_to({xy.x, xy.y, clear}, col);
+  }
+  rapid_to({xy.x, xy.y, r}, col);
+  cycle_holes(col, clear);
+}
+
+void Interpreter::cycle_holes(int col, double clear) {
+  const Vec3 top = pos_;
+  const Vec3 bottom{top.x, top.y, st_.cycle_z};
+  const Vec3 out{top.x, top.y, clear};
+  switch (st_.cycle) {
+    case 73: case 83: return peck(col, clear);
+    case 81: feed_to(bottom, col); break;
+    case 82: feed_to(bottom, col), dwell(col, st_.cycle_p); break;
+    case 85: feed_to(bottom, col), feed_to(top, col); break;
+    case 89: feed_to(bottom, col), dwell(col, st_.cycle_p), feed_to(out, col); break;
+  }
+  rapid_to(out, col);
+}
+
+// G83: each peck Q deeper, back to R between pecks, rapid down to the last
+// depth + 0.010 in; G73: a 0.010 in retract between pecks.
+void Interpreter::peck(int col, double clear) {
+  constexpr double kDelta = 0.254;  // mm (LinuxCNC: 0.010 in)
+  const double r = pos_.z, bottom = st_.cycle_z;
+  double depth = r;
+  while (depth > bottom) {
+    if (depth != r && st_.cycle == 83) rapid_to({pos_.x, pos_.y, depth + kDelta}, col);
+    depth -= st_.cycle_q;
+    if (depth < bottom + 1e-9) depth = bottom;  // a peck that reaches the bottom up to rounding is the last
+    feed_to({pos_.x, pos_.y, depth}, col);
+    if (depth <= bottom) break;
+    rapid_to({pos_.x, pos_.y, st_.cycle == 83 ? r : depth + kDelta}, col);
+  }
+  rapid_to({pos_.x, pos_.y, clear}, col);
 }
 
 bool Interpreter::stop_words(const LineCodes& c) {
