@@ -330,7 +330,7 @@ TEST(GcodeLanguage, ArcCentreModesBlockDeleteAndLineEnds) {
   Options keep;
   keep.block_delete = false;
   EXPECT_EQ(read("G1 X1 F10\n/G1 X5\n", keep).blocks.size(), 2u);
-  expect_error("O100 sub\n", 1, 1, "O-words");
+  expect_error("O100 sub\n", 1, 1, "O100 sub is not closed");
   expect_error("G1 @1 ^2 F1\n", 1, 4, "polar coordinates");
 }
 
@@ -415,6 +415,68 @@ TEST(GcodeCycles, DrillDwellPeckReamAndRetractModes) {
   expect_error("G91 G81 X1 Y1 Z-3 R2 F100\n", 1, 5, "incremental mode (G91) are not supported");
   expect_error("G18 G81 X1 Y1 Z-3 R2 F100\n", 1, 5, "G17 plane only");
   expect_error("G81 X1 Y1 Z-3 R2 L3 F100\n", 1, 18, "repeats L other than 1");
+}
+
+// O-words: subroutines with arguments and local parameters, if/elseif/else,
+// while, do-while, repeat, break, continue; the bounds against runaways.
+TEST(GcodeOWords, SubroutinesAndControlFlow) {
+  const Program p = read(
+      "#<depth> = 7\n"
+      "o<hole> sub\n"
+      "  #<depth> = [#1 * 2]\n"  // a local: the caller's #<depth> is kept
+      "  G0 X#1 Y#2\n"
+      "  o10 if [#3 GT 0]\n"
+      "    G1 Z-#3 F100\n"
+      "  o10 elseif [#3 EQ 0]\n"
+      "    G1 Z-0.5 F100\n"
+      "  o10 else\n"
+      "    o<hole> return\n"
+      "  o10 endif\n"
+      "  G0 Z1\n"
+      "o<hole> endsub\n"
+      "o<hole> call [1] [2] [3]\n"
+      "o<hole> call [4] [5] [0]\n"
+      "o<hole> call [6] [7] [-1]\n"
+      "G0 X#<depth> Y#1\n"
+      "#9 = 0\n"
+      "o20 while [#9 LT 3]\n"
+      "  #9 = [#9 + 1]\n"
+      "  o20 if [#9 EQ 2]\n"
+      "    o20 continue\n"
+      "  o20 endif\n"
+      "  G0 X[10 + #9]\n"
+      "o20 endwhile\n"
+      "o30 repeat [2]\n"
+      "  G0 Y[#9 + 10]\n"
+      "  #9 = [#9 + 1]\n"
+      "o30 endrepeat\n"
+      "o40 do\n"
+      "  #9 = [#9 + 1]\n"
+      "  o40 if [#9 GT 7]\n"
+      "    o40 break\n"
+      "  o40 endif\n"
+      "  G0 Z#9\n"
+      "o40 while [1]\n"
+      "M2\n");
+  EXPECT_EQ(moves(p),
+            "R1,2,0 F1,2,-3 R1,2,1 R4,5,1 F4,5,-0.5 R4,5,1 R6,7,1 R7,0,1 R11,0,1 R13,0,1 R13,13,1 R13,14,1 "
+            "R13,14,6 R13,14,7 ");
+  EXPECT_TRUE(p.ended);
+}
+
+TEST(GcodeOWords, RunawayBoundsAndStructureErrors) {
+  expect_error("o1 while [1]\no1 endwhile\n", 1, 1, "more than 10^7 lines");
+  expect_error("o<r> sub\no<r> call\no<r> endsub\no<r> call\n", 2, 1, "nested deeper than 64");
+  expect_error("o1 repeat [3000000]\nG0 X1\nG0 X2\no1 endrepeat\n", 3, 1, "more than 2*10^6 moves");
+  expect_error("o1 if [1]\n", 1, 1, "O1 if is not closed");
+  expect_error("o1 endif\n", 1, 1, "without its opening O1");
+  expect_error("o1 if [1]\no2 endif\n", 2, 1, "without its opening O2");
+  expect_error("o1 while [1]\no1 endif\n", 2, 1, "does not close O1 while");
+  expect_error("o1 break\n", 1, 1, "outside an O1 loop");
+  expect_error("o<x> call\n", 1, 1, "subroutine O<x> is not defined");
+  expect_error("o1 return\n", 1, 1, "return outside a subroutine");
+  expect_error("o1 frobnicate\n", 1, 1, "unknown O-word keyword 'frobnicate'");
+  expect_error("G0 X1 o1 if [1]\n", 1, 7, "an O-word must begin its line");
 }
 
 }  // namespace

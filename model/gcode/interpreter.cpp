@@ -1,10 +1,13 @@
 // The interpreter of gcode.hpp: one line at a time, in LinuxCNC's order of
 // execution, into motion blocks, dwells and events.
 #include <array>
+#include <memory>
 #include <cmath>
 #include <cstdio>
 #include <optional>
 #include <string>
+
+#include "gcode/interpreter.hpp"
 
 #include "gcode/arc.hpp"
 #include "gcode/gcode.hpp"
@@ -102,6 +105,8 @@ struct State {
   std::optional<double> cycle_il;  // the initial level: Z when the series of cycles began
 };
 
+}  // namespace
+
 class Interpreter {
  public:
   explicit Interpreter(const Options& o) : opt_(o), pos_(o.start) {}
@@ -123,6 +128,8 @@ class Interpreter {
   }
 
   Program take() { return std::move(prog_); }
+  Params& params() { return params_; }
+  std::size_t blocks() const { return prog_.blocks.size(); }
 
   // A '/' line is skipped unread when block delete is on (its words may
   // use parameters that are not set).
@@ -555,36 +562,11 @@ bool Interpreter::stop_words(const LineCodes& c) {
   return false;
 }
 
-}  // namespace
-
-Program read(std::string_view text, const Options& options) {
-  Interpreter in(options);
-  int lineno = 0;
-  std::size_t at = 0;
-  bool delimited = false, first = true;
-  while (at <= text.size()) {
-    const auto nl = text.find('\n', at);
-    std::string_view line = text.substr(at, nl == std::string_view::npos ? std::string_view::npos : nl - at);
-    ++lineno;
-    const auto nonblank = line.find_first_not_of(" \t\r");
-    if (nonblank != std::string_view::npos && line[nonblank] == '%') {
-      read_words(line, lineno);  // checks that nothing follows
-      if (first) delimited = true;
-      else if (delimited) {  // the closing '%': the rest is not read
-        Program p = in.take();
-        p.ended = true;
-        return p;
-      }
-    } else if (!in.line(line, lineno)) {
-      Program p = in.take();
-      p.ended = true;
-      return p;
-    }
-    if (nonblank != std::string_view::npos) first = false;
-    if (nl == std::string_view::npos) break;
-    at = nl + 1;
-  }
-  return in.take();
-}
+LineRunner::LineRunner(const Options& o) : impl_(std::make_unique<Interpreter>(o)) {}
+LineRunner::~LineRunner() = default;
+bool LineRunner::line(std::string_view text, int lineno) { return impl_->line(text, lineno); }
+Params& LineRunner::params() { return impl_->params(); }
+std::size_t LineRunner::blocks() const { return impl_->blocks(); }
+Program LineRunner::take() { return impl_->take(); }
 
 }  // namespace contour::gcode

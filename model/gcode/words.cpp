@@ -57,6 +57,16 @@ class LineReader {
  public:
   LineReader(std::string_view text, int line, const Params* params) : s_(text), line_(line), params_(params) {}
 
+  // The bracketed expression at pos (after blanks); pos moves past it.
+  double expression_at(std::size_t& pos) {
+    pos_ = pos;
+    skip_blank();
+    if (peek() != '[') fail("expected '[' (an expression)");
+    const double v = bracketed(0);
+    pos = pos_;
+    return v;
+  }
+
   LineWords read() {
     LineWords w;
     skip_blank();
@@ -93,7 +103,7 @@ class LineReader {
     const char raw = s_[pos_];
     if (!std::isalpha(static_cast<unsigned char>(raw))) fail(not_a_word(raw));
     const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(raw)));
-    if (c == 'O') fail("O-words (subroutines, loops) are not supported");
+    if (c == 'O') fail("an O-word must begin its line");
     ++pos_;
     const double v = value(c, col);
     if (c == 'N') {
@@ -408,6 +418,10 @@ class LineReader {
 
 LineWords read_words(std::string_view text, int line, const Params* params) {
   return LineReader(text, line, params).read();
+}
+
+double read_expression(std::string_view text, int line, std::size_t& pos, const Params& params) {
+  return LineReader(text, line, &params).expression_at(pos);
 }
 
 }  // namespace contour::gcode

@@ -59,4 +59,8 @@ constexpr int kMaxExpressionDepth = 64;
 // line may set parameters; without (a tool table) '#' and '[' are refused.
 LineWords read_words(std::string_view text, int line, const Params* params = nullptr);
 
+// The expression '[...]' at text[pos] (blanks before it skipped); pos moves
+// past it. Throws Error like read_words.
+double read_expression(std::string_view text, int line, std::size_t& pos, const Params& params);
+
 }  // namespace contour::gcode
