@@ -141,6 +141,10 @@ struct Options {
   Vec3 start;  // machine position before the first block, mm
   ToolTable tools;
   bool block_delete = true;  // skip lines that start with '/'
+  // Bounds against runaway programs (O-word loops, recursion): lines run
+  // and moves made; beyond either the program stops with an Error.
+  std::size_t max_lines_run = 10'000'000;
+  std::size_t max_blocks = 2'000'000;
 };
 
 struct Program {

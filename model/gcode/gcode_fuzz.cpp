@@ -1,4 +1,6 @@
 // libFuzzer target: any byte string either parses or throws gcode::Error;
+// the whole language: words, parameters, expressions, O-word control flow,
+// canned cycles (seeds in corpus/), with small runaway bounds;
 // nothing else (no crash, no other exception, no non-finite coordinate).
 // When built with the planner (CONTOUR_FUZZ_PLANNER), a parsed program of
 // modest size is also planned, and the plan must be finite and respect its
@@ -20,6 +22,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     contour::gcode::Options o;
     o.tools = {{1, 10.0}, {2, -5.5}};  // so that G43 H1 / H2 are read
+    o.max_lines_run = 20000;           // endless loops stop in milliseconds
+    o.max_blocks = 5000;
     blocks = contour::gcode::parse(text, o);
   } catch (const contour::gcode::Error& e) {
     if (e.line() < 1 || e.column() < 1) std::abort();

@@ -476,6 +476,9 @@ TEST(GcodeOWords, RunawayBoundsAndStructureErrors) {
   expect_error("o<x> call\n", 1, 1, "subroutine O<x> is not defined");
   expect_error("o1 return\n", 1, 1, "return outside a subroutine");
   expect_error("o1 frobnicate\n", 1, 1, "unknown O-word keyword 'frobnicate'");
+  // Found by the fuzzer: a number too long for a long (it threw out_of_range).
+  expect_error("o4444444444444444444444444444444444101 sub\n", 1, 1, "O-word number is too long");
+  EXPECT_EQ(read("o0100 sub\nG0 X1\no100 endsub\no100 call\n").blocks.size(), 1u);
   expect_error("G0 X1 o1 if [1]\n", 1, 7, "an O-word must begin its line");
 }
 

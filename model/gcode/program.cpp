@@ -50,7 +50,8 @@ std::optional<OWord> o_word(std::string_view s, int lineno) {
   } else {
     while (q < s.size() && std::isdigit(static_cast<unsigned char>(s[q]))) o.label += s[q++];
     if (o.label.empty()) throw Error(lineno, o.column, "O-word without a number or <name>");
-    o.label = std::to_string(std::stol(o.label));  // o0100 is o100
+    if (o.label.size() > 18) throw Error(lineno, o.column, "O-word number is too long");
+    o.label.erase(0, std::min(o.label.find_first_not_of('0'), o.label.size() - 1));  // o0100 is o100
   }
   while (q < s.size() && (s[q] == ' ' || s[q] == '\t')) ++q;
   while (q < s.size() && std::isalpha(static_cast<unsigned char>(s[q])))
@@ -194,9 +195,14 @@ class Structure {
 
 // Bounds against runaway programs (docs/paper-b.md): lines run, subroutine
 // depth, moves emitted. Each stops the program with an Error (exit 2).
-constexpr std::size_t kMaxLinesRun = 10'000'000;
+// (Options::max_lines_run, Options::max_blocks; the call depth here.)
 constexpr std::size_t kMaxCallDepth = 64;
-constexpr std::size_t kMaxBlocks = 2'000'000;
+
+std::string count(std::size_t n) {
+  if (n == 10'000'000) return "10^7";
+  if (n == 2'000'000) return "2*10^6";
+  return std::to_string(n);
+}
 constexpr int kLocals = 30;  // #1..#30 are a subroutine's own
 
 struct Frame {
@@ -208,16 +214,18 @@ struct Frame {
 
 class Runner {
  public:
-  Runner(std::string_view text, const Options& o) : lines_(split(text, closed_)), run_(o) { frames_.emplace_back(); }
+  Runner(std::string_view text, const Options& o) : opt_(o), lines_(split(text, closed_)), run_(o) {
+    frames_.emplace_back();
+  }
 
   Program run() {
     Structure(lines_).build();
     std::size_t pc = 0, steps = 0;
     while (pc < lines_.size()) {
       const Line& l = lines_[pc];
-      if (++steps > kMaxLinesRun)
-        fail(l, "the program runs more than 10^7 lines (an endless loop?); the bound is kMaxLinesRun");
-      if (run_.blocks() > kMaxBlocks) fail(l, "the program makes more than 2*10^6 moves; the bound is kMaxBlocks");
+      if (++steps > opt_.max_lines_run)
+        fail(l, "the program runs more than " + count(opt_.max_lines_run) + " lines (an endless loop?)");
+      if (run_.blocks() > opt_.max_blocks) fail(l, "the program makes more than " + count(opt_.max_blocks) + " moves");
       if (!l.o) {
         if (!run_.line(l.text, l.number)) return ended();
         ++pc;
@@ -330,6 +338,7 @@ class Runner {
     return f.return_to;
   }
 
+  const Options& opt_;
   bool closed_ = false;  // a closing '%' was read
   std::vector<Line> lines_;
   LineRunner run_;
