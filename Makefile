@@ -64,6 +64,7 @@ bench: build
 	@$(CMAKE) --build $(BUILD) -j$(JOBS) --target benches
 	@$(BUILD)/model/bench/contour_bench
 	@$(BUILD)/model/bench/interp_ipp
+	@model/planner/bench_gcode.sh $(BUILD)/contour
 
 synth: deps
 	@$(MAKE) --no-print-directory -C rtl/synth BUILD=$(abspath $(BUILD))/synth
