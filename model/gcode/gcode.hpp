@@ -32,7 +32,11 @@
 //   G90 G91           absolute / incremental X Y Z
 //   G90.1 G91.1       arc centres I J K absolute / relative to the start
 //   G94               feed per minute (G93 inverse time and G95 refused)
-//   G98 G99           canned-cycle retract mode (kept; cycles are refused)
+//   G73 G81 G82 G83 G85 G89  canned cycles (G17, absolute mode): X Y the
+//                     hole, R the retract plane, Z the bottom, Q the peck,
+//                     P the dwell (R Z P Q sticky), expanded into LinuxCNC's
+//                     moves; G80 ends them
+//   G98 G99           cycle retract to the initial level / to R
 //   M0 M1             pause (the machine comes to rest)
 //   M2 M30            program end: nothing after it is read
 //   M3 M4 M5 S        spindle CW / CCW / stop (a stop), speed
@@ -40,6 +44,10 @@
 //   M7 M8 M9          mist / flood / coolant off
 //   X Y Z I J K R F   end point, arc centre, arc radius (negative: more than
 //                     180 degrees), feed in units per minute (modal)
+// Parameters and expressions (words.hpp): #1..#5399, #<name>, '[...]';
+// O-words (program.cpp): sub/endsub/call/return, if/elseif/else/endif,
+// while/endwhile, do/while, repeat/endrepeat, break, continue; runaway
+// programs stop at Options::max_lines_run lines or max_blocks moves.
 // Non-motion words are kept as Events in the program, in LinuxCNC's order
 // of execution within a line: F, S, T, M6, M3-M5, M7-M9, G4, plane, units,
 // G40, G43/G49, G54.., G61/G64, G90/G91, G90.1/G91.1, G98/G99, G10 G28 G30
