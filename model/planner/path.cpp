@@ -161,17 +161,30 @@ double Segment::distance(const Vec3& p) const {
     if (rel <= sweep || sweep >= kTwoPi) return std::hypot(std::hypot(u, v) - radius, h);
     return std::min(norm(p - start), norm(p - end));
   }
-  // Helix: coarse scan over s, then golden-section refinement.
-  constexpr int kScan = 64;
-  double best_s = 0, best = norm(p - start);
+  return nearest_on_helix(p, 0, length, 64);
+}
+
+double Segment::distance_near(const Vec3& p, double s_lo, double s_hi) const {
+  if (kind != Kind::Arc || !helix()) return distance(p);
+  return nearest_on_helix(p, s_lo, s_hi, 8);
+}
+
+// Coarse scan of kScan steps over [s_lo, s_hi], then golden-section
+// refinement around the best.
+double Segment::nearest_on_helix(const Vec3& p, double s_lo, double s_hi, int kScan) const {
+  s_lo = std::clamp(s_lo, 0.0, length);
+  s_hi = std::clamp(s_hi, s_lo, length);
+  const double span = s_hi - s_lo;
+  double best_s = s_lo, best = norm(p - point(s_lo));
   for (int i = 1; i <= kScan; ++i) {
-    const double s = length * i / kScan;
+    const double s = s_lo + span * i / kScan;
     const double d = norm(p - point(s));
     if (d < best) best = d, best_s = s;
   }
-  double lo = std::max(0.0, best_s - length / kScan), hi = std::min(length, best_s + length / kScan);
+  double lo = std::max(s_lo, best_s - span / kScan), hi = std::min(s_hi, best_s + span / kScan);
   const double gr = (std::sqrt(5.0) - 1) / 2;
-  for (int i = 0; i < 60; ++i) {
+  const int iterations = kScan >= 64 ? 60 : 36;  // a chord's stretch is short: 0.618^36 of it is below 1e-7
+  for (int i = 0; i < iterations; ++i) {
     const double m1 = hi - gr * (hi - lo), m2 = lo + gr * (hi - lo);
     if (norm(p - point(m1)) < norm(p - point(m2))) hi = m2;
     else lo = m1;

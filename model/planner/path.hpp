@@ -69,6 +69,14 @@ struct Segment {
   // Distance from p to the path (the segment or the arc portion, clamped to
   // its ends). Exact for lines and plane arcs; helices by Newton iteration.
   double distance(const Vec3& p) const;
+  // The same over the part of the path between path lengths s_lo and s_hi
+  // (helices; lines and plane arcs: distance()). Never less than distance().
+  double distance_near(const Vec3& p, double s_lo, double s_hi) const;
+
+ private:
+  double nearest_on_helix(const Vec3& p, double s_lo, double s_hi, int scan) const;
+
+ public:
 };
 
 // Distance from p to the straight segment a-b.

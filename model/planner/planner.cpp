@@ -403,13 +403,20 @@ double chord_error(const Plan& plan, const Sample& a, const Sample& b) {
       return std::max({err, std::fabs(qa[2]), std::fabs(qb[2])});
     }
   }
-  // Sampled, both ways, over every segment the chord spans.
+  // Sampled, both ways, over every segment the chord spans. On a helix the
+  // search for the nearest point is kept to the chord's own stretch of the
+  // path and as much again on each side: another turn is a pitch away, so
+  // the distance found is the true one (and never less).
   constexpr int kN = 16;
   double err = 0;
   for (int j = 0; j <= kN; ++j) {
     const Vec3 p = a.p + (static_cast<double>(j) / kN) * (b.p - a.p);
     double d = kInf;
-    for (int k = a.seg; k <= b.seg; ++k) d = std::min(d, plan.segs[k].geom.distance(p));
+    for (int k = a.seg; k <= b.seg; ++k) {
+      const Segment& g = plan.segs[k].geom;
+      const double s0 = k == a.seg ? a.s : 0, s1 = k == b.seg ? b.s : g.length;
+      d = std::min(d, g.distance_near(p, 2 * s0 - s1 - 1e-3, 2 * s1 - s0 + 1e-3));
+    }
     err = std::max(err, d);
   }
   for (int k = a.seg; k <= b.seg; ++k) {
