@@ -3,7 +3,7 @@
 #   make run     the paper reproduction and the co-simulation report
 #   make test    the whole suite (ctest: model, RTL, ISS, 8085, cosim, lint)
 #   make build   configure and build everything; the CLI is build/contour
-#   make bench   speed figures (Google Benchmark, callgrind)
+#   make bench   speed figures (Google Benchmark, callgrind; paper B: model/planner/bench_gcode.sh)
 #   make synth   yosys + nextpnr-ice40: LCs and Fmax on HX8K and UP5K
 #   make lint    verilator --lint-only -Wall over rtl/ (every core's file list)
 #   make formal  the formal proofs and their mutants (ctest -L formal)
@@ -67,6 +67,7 @@ bench: build
 	@$(BUILD)/model/bench/interp_ipp
 	@$(BUILD)/model/bench/iss_ipt
 	@$(BUILD)/tb/cpu8085/cpu8085_tps
+	@model/planner/bench_gcode.sh $(BUILD)/contour
 
 synth: deps
 	@$(MAKE) --no-print-directory -C rtl/synth BUILD=$(abspath $(BUILD))/synth

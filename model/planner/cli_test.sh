@@ -56,9 +56,21 @@ done
   bad "pulse counts"
 sort -s -g -k1,1 -c "$work/pulses.txt" && ok || bad "pulses not in time order"
 
+# R arcs by LinuxCNC's rule: a semicircle whose end is rounded by 1 um runs
+# on the half circle of its chord, within the tolerance (exit 0; it was
+# interpolated at radius R about the midpoint and flagged EXCEEDED).
+printf 'G21 G0 X10 Y0\nG3 X-10.001 Y0 R10 F600\n' > "$work/semi.ngc"
+"$contour" gcode "$work/semi.ngc" > "$work/semi.out" && ok || bad "rounded semicircle exit $?: $(cat "$work/semi.out")"
+
+# Blending: the corner error is reported against the blend tolerance.
+printf 'G1 X10 F3000\nX20 Y0.1\nX30 Y0\n' > "$work/bend.ngc"
+out=$("$contour" gcode "$work/bend.ngc" --blend-tol 5) || bad "bend exit $?"
+echo "$out" | grep -Eq '^max corner err +[0-9.]+ um \(blend tolerance 5 um unless G64 P\): ok' && ok || bad "corner line: $out"
+"$contour" gcode "$work/bend.ngc" --format json | grep -q '"blend_ok": true' && ok || bad "json blend_ok"
+
 # Errors: exit 2, one line on stderr, naming the problem.
 printf 'G1 X1 F10\nG2 X10.04 Y0 I5 J0\n' > "$work/radius.ngc"
-printf 'G1 X1 F10\nG1 M3\n' > "$work/word.ngc"
+printf 'G1 X1 F10\nG1 M98\n' > "$work/word.ngc"
 printf 'vmax_x = 6000\nspeed = 3\n' > "$work/bad.cfg"
 printf 'amax_x = -1\n' > "$work/neg.cfg"
 expect_error() {  # want-substring args...
@@ -73,7 +85,7 @@ expect_error() {  # want-substring args...
 expect_error "cannot read '$work/none.ngc'" "$work/none.ngc"
 expect_error "missing argument FILE"
 expect_error "radius.ngc: line 2, column 1: radius to end of arc differs from radius to start: r1=5.0000 mm r2=4.0400 mm" "$work/radius.ngc"
-expect_error "word.ngc: line 2, column 4: unsupported word 'M'" "$work/word.ngc"
+expect_error "word.ngc: line 2, column 4: unsupported M code M98" "$work/word.ngc"
 expect_error "--chord: unknown placement 'd'" "$work/line.ngc" --chord d
 expect_error "--tol: must be > 0" "$work/line.ngc" --tol 0
 expect_error "--cycle: 'fast' is not a number" "$work/line.ngc" --cycle fast
@@ -88,6 +100,16 @@ expect_error "--engine: unknown engine 'nope'" "$work/line.ngc" --pulses --engin
 expect_error "--steps-per-mm: must be > 0" "$work/line.ngc" --pulses --steps-per-mm 0
 expect_error "does not combine" "$work/line.ngc" --pulses --csv "$work/x.csv"
 expect_error "unknown option '--bogus'" "$work/line.ngc" --bogus
+expect_error "'$work' is a directory, not a file" "$work"
+expect_error "--config: '$work' is a directory" "$work/line.ngc" --config "$work"
+expect_error "--cycle: at most 1000 ms" "$work/line.ngc" --cycle 1e9
+expect_error "--blend-tol: must be >= 0" "$work/line.ngc" --blend-tol -1
+printf 'T1 P1 Z1\nT1 P2 Z2\n' > "$work/twice.tbl"
+expect_error "--tool-table: $work/twice.tbl: line 2, column 1: tool table: tool 1 is listed twice" "$work/line.ngc" --tool-table "$work/twice.tbl"
+printf 'G43 H1\n' > "$work/tlo.ngc"
+expect_error "tlo.ngc: line 1, column 5: tool 1 is not in the tool table (give one with --tool-table)" "$work/tlo.ngc"
+printf 'G0 X10 Y0\nG2 X-10 Y0 R9.975 F600\n' > "$work/rshort.ngc"
+expect_error "rshort.ngc: line 2, column 12: arc radius too small to reach the end point: |R|=9.9750" "$work/rshort.ngc"
 printf 'G1 X100000 F0.01\n' > "$work/long.ngc"
 expect_error "more than this tool simulates" "$work/long.ngc"
 

@@ -39,6 +39,14 @@ Segment make_segment(const gcode::Block& b) {
   g.end = b.end;
   g.line = b.line;
   g.rapid = b.motion == gcode::Motion::Rapid;
+  g.exact_stop = b.path == gcode::PathMode::ExactStop;
+  g.blend_tol = b.blend_tol_mm;
+  if (b.is_dwell()) {
+    g.kind = Segment::Kind::Dwell;
+    g.dwell_s = b.dwell_s;
+    g.exact_stop = true;
+    return g;
+  }
   if (!b.is_arc()) {
     g.kind = Segment::Kind::Line;
     g.length = norm(b.end - b.start);
@@ -124,13 +132,13 @@ Vec3 Segment::point(double s, double radial_offset) const {
   if (s <= 0 && radial_offset == 0) return start;
   if (s >= length && radial_offset == 0) return end;
   s = std::clamp(s, 0.0, length);
-  if (kind == Kind::Line) return start + s * dir;
+  if (kind != Kind::Arc) return start + s * dir;
   const UV q = uv_at(s, radial_offset);
   return origin + q.u * u_hat + q.v * v_hat + (s / length) * rise;
 }
 
 Vec3 Segment::tangent(double s) const {
-  if (kind == Kind::Line) return dir;
+  if (kind != Kind::Arc) return dir;
   const double a = alpha_s + sigma * sweep * (s / length);
   const double k = sigma * radius * sweep / length;
   const Vec3 t = (-k * std::sin(a)) * u_hat + (k * std::cos(a)) * v_hat + (1.0 / length) * rise;
@@ -138,13 +146,13 @@ Vec3 Segment::tangent(double s) const {
 }
 
 double Segment::curvature_radius() const {
-  if (kind == Kind::Line) return 0;
+  if (kind != Kind::Arc) return 0;
   const double c = norm(rise) / sweep;
   return (radius * radius + c * c) / radius;
 }
 
 double Segment::distance(const Vec3& p) const {
-  if (kind == Kind::Line) return distance_to_segment(p, start, end);
+  if (kind != Kind::Arc) return distance_to_segment(p, start, end);
   if (!helix()) {
     const Vec3 w = p - origin;
     const Vec3 nn = cross(u_hat, v_hat);
@@ -153,17 +161,30 @@ double Segment::distance(const Vec3& p) const {
     if (rel <= sweep || sweep >= kTwoPi) return std::hypot(std::hypot(u, v) - radius, h);
     return std::min(norm(p - start), norm(p - end));
   }
-  // Helix: coarse scan over s, then golden-section refinement.
-  constexpr int kScan = 64;
-  double best_s = 0, best = norm(p - start);
+  return nearest_on_helix(p, 0, length, 64);
+}
+
+double Segment::distance_near(const Vec3& p, double s_lo, double s_hi) const {
+  if (kind != Kind::Arc || !helix()) return distance(p);
+  return nearest_on_helix(p, s_lo, s_hi, 8);
+}
+
+// Coarse scan of kScan steps over [s_lo, s_hi], then golden-section
+// refinement around the best.
+double Segment::nearest_on_helix(const Vec3& p, double s_lo, double s_hi, int kScan) const {
+  s_lo = std::clamp(s_lo, 0.0, length);
+  s_hi = std::clamp(s_hi, s_lo, length);
+  const double span = s_hi - s_lo;
+  double best_s = s_lo, best = norm(p - point(s_lo));
   for (int i = 1; i <= kScan; ++i) {
-    const double s = length * i / kScan;
+    const double s = s_lo + span * i / kScan;
     const double d = norm(p - point(s));
     if (d < best) best = d, best_s = s;
   }
-  double lo = std::max(0.0, best_s - length / kScan), hi = std::min(length, best_s + length / kScan);
+  double lo = std::max(s_lo, best_s - span / kScan), hi = std::min(s_hi, best_s + span / kScan);
   const double gr = (std::sqrt(5.0) - 1) / 2;
-  for (int i = 0; i < 60; ++i) {
+  const int iterations = kScan >= 64 ? 60 : 36;  // a chord's stretch is short: 0.618^36 of it is below 1e-7
+  for (int i = 0; i < iterations; ++i) {
     const double m1 = hi - gr * (hi - lo), m2 = lo + gr * (hi - lo);
     if (norm(p - point(m1)) < norm(p - point(m2))) hi = m2;
     else lo = m1;

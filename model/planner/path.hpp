@@ -33,12 +33,15 @@ struct UV {
 };
 
 struct Segment {
-  enum class Kind { Line, Arc };
+  enum class Kind { Line, Arc, Dwell };  // Dwell: at rest at start for dwell_s (0: a stop)
   Kind kind = Kind::Line;
   bool rapid = false;
   Vec3 start, end;
   double length = 0;  // path length, mm
   int line = 0;       // source line of the block
+  double dwell_s = 0;       // Dwell
+  bool exact_stop = false;  // G61/G61.1 (and dwells): at rest at the end
+  double blend_tol = -1;    // G64 P, mm (< 0: the configured default)
 
   // Line.
   Vec3 dir;  // unit
@@ -66,6 +69,14 @@ struct Segment {
   // Distance from p to the path (the segment or the arc portion, clamped to
   // its ends). Exact for lines and plane arcs; helices by Newton iteration.
   double distance(const Vec3& p) const;
+  // The same over the part of the path between path lengths s_lo and s_hi
+  // (helices; lines and plane arcs: distance()). Never less than distance().
+  double distance_near(const Vec3& p, double s_lo, double s_hi) const;
+
+ private:
+  double nearest_on_helix(const Vec3& p, double s_lo, double s_hi, int scan) const;
+
+ public:
 };
 
 // Distance from p to the straight segment a-b.

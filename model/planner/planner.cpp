@@ -19,6 +19,10 @@ constexpr double kArcAccelMargin = 0.01;
 constexpr double kTolMargin = 1e-3;
 constexpr double kNormalShare = 0.8660254037844386;  // sqrt(3)/2: a_t >= A/2
 constexpr double kOffsetAccelShare = 0.005;          // radial offset jump at a junction
+// A feed line with a blended corner at either end plans its tangential
+// acceleration at (1 - kCornerShare) of what its axes allow, leaving the
+// rest for the velocity step of passing the corner (planner.hpp, "Blending").
+constexpr double kCornerShare = 0.5;
 
 void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument(what);
@@ -72,6 +76,8 @@ void Config::validate() const {
   auto pos = [](double v) { return std::isfinite(v) && v > 0; };
   require(pos(cycle_s), "cycle must be > 0 s (got " + std::to_string(cycle_s) + ")");
   require(pos(tol_mm), "tolerance must be > 0 mm (got " + std::to_string(tol_mm) + ")");
+  require(std::isfinite(blend_tol_mm) && blend_tol_mm >= 0,
+          "blend tolerance must be >= 0 mm (got " + std::to_string(blend_tol_mm) + ")");
   const char* names = "XYZ";
   for (int i = 0; i < 3; ++i) {
     require(pos(machine.vmax[i]), std::string("velocity limit of ") + names[i] + " must be > 0");
@@ -163,6 +169,7 @@ PlannedSegment plan_segment(const gcode::Block& b, const Config& config, double 
   PlannedSegment ps;
   ps.geom = make_segment(b);
   const Segment& g = ps.geom;
+  if (g.kind == Segment::Kind::Dwell) return ps;  // at rest: v_cap 0, a_t 0
   ps.v_cap = g.rapid ? mc.rapid : b.feed_mm_s;
   ps.cap = g.rapid ? Cap::Rapid : Cap::Feed;
   if (g.kind == Segment::Kind::Line) {
@@ -179,11 +186,44 @@ PlannedSegment plan_segment(const gcode::Block& b, const Config& config, double 
   return ps;
 }
 
-// The speed limit at the junction s1 -> s2 (planner.hpp, "junction limit").
+// Whether the corner s1 -> s2 may be blended: two feed moves (G1 G2 G3),
+// s1 in G64.
+bool blendable(const PlannedSegment& s1, const PlannedSegment& s2) {
+  auto feed = [](const Segment& g) { return g.kind != Segment::Kind::Dwell && !g.rapid; };
+  return feed(s1.geom) && feed(s2.geom) && !s1.geom.exact_stop;
+}
+
+// The path tolerance at the junction s1 -> s2: the blend tolerance (G64 P of
+// either block, else the configured one) where it may be blended, else eps.
+double junction_tol(const PlannedSegment& s1, const PlannedSegment& s2, const Config& config, double eps) {
+  if (!blendable(s1, s2)) return eps;
+  auto p = [&](const Segment& g) { return g.blend_tol >= 0 ? g.blend_tol : config.blend_tol_mm; };
+  return std::max(eps, std::min(p(s1.geom), p(s2.geom)) * (1 - kTolMargin));
+}
+
+// Feed lines with a blended corner at either end keep kCornerShare of their
+// axes' acceleration for the corner.
+void reserve_corner_acceleration(std::vector<PlannedSegment>& segs) {
+  for (std::size_t k = 0; k < segs.size(); ++k) {
+    PlannedSegment& s = segs[k];
+    if (s.geom.kind != Segment::Kind::Line || s.geom.rapid) continue;
+    auto bent = [](const PlannedSegment& a, const PlannedSegment& b) {
+      return blendable(a, b) && dot(a.geom.tangent(a.geom.length), b.geom.tangent(0)) < 1 - 1e-12;
+    };
+    const bool corner = (k > 0 && bent(segs[k - 1], s)) || (k + 1 < segs.size() && bent(s, segs[k + 1]));
+    if (!corner) continue;
+    s.a_t *= 1 - kCornerShare;
+    s.accel_use = (1 - kCornerShare) * s.accel_use;
+  }
+}
+
+// The speed limit at the junction s1 -> s2 (planner.hpp, "junction limit");
+// eps: the junction's path tolerance (junction_tol).
 double junction_limit(const PlannedSegment& s1, const PlannedSegment& s2, const Config& config, double eps,
                       double amin) {
   const Machine& mc = config.machine;
   const double T = config.cycle_s;
+  if (s1.geom.exact_stop || s2.geom.kind == Segment::Kind::Dwell) return 0;
   double lim = std::min(s1.v_cap, s2.v_cap);
   const double amx = std::max(s1.a_t, s2.a_t);
   const Vec3 t1 = s1.geom.tangent(s1.geom.length), t2 = s2.geom.tangent(0);
@@ -228,6 +268,10 @@ void shape_trapezoid(PlannedSegment& s, double v_start, double v_end) {
   const double L = s.geom.length, a = s.a_t;
   s.v_start = v_start;
   s.v_end = v_end;
+  if (s.geom.kind == Segment::Kind::Dwell) {
+    s.duration = s.geom.dwell_s;
+    return;
+  }
   const double v_peak = std::sqrt((2 * a * L + s.v_start * s.v_start + s.v_end * s.v_end) / 2);
   s.v_cruise = std::max({std::min(s.v_cap, v_peak), s.v_start, s.v_end});
   s.s_acc = (s.v_cruise * s.v_cruise - s.v_start * s.v_start) / (2 * a);
@@ -265,11 +309,17 @@ Plan plan(const std::vector<gcode::Block>& blocks, const Config& config) {
   const double eps = config.tol_mm * (1 - kTolMargin);
   const double amin = std::min({mc.amax.x, mc.amax.y, mc.amax.z});
   for (const auto& b : blocks) p.segs.push_back(plan_segment(b, config, eps));
+  reserve_corner_acceleration(p.segs);
 
   // Junction limits. J[k] is the speed at the start of segment k; J[n] = 0.
   const std::size_t n = p.segs.size();
   std::vector<double> J(n + 1, 0.0);
-  for (std::size_t k = 1; k < n; ++k) J[k] = junction_limit(p.segs[k - 1], p.segs[k], config, eps, amin);
+  p.junction_tol.assign(n + 1, config.tol_mm);
+  for (std::size_t k = 1; k < n; ++k) {
+    const double tol = junction_tol(p.segs[k - 1], p.segs[k], config, eps);
+    p.junction_tol[k] = std::max(config.tol_mm, tol / (1 - kTolMargin));
+    J[k] = junction_limit(p.segs[k - 1], p.segs[k], config, tol, amin);
+  }
   p.junction_limit = J;
   reachable_junction_speeds(p.segs, J);
   for (std::size_t k = 0; k < n; ++k) shape_trapezoid(p.segs[k], J[k], J[k + 1]);
@@ -333,7 +383,7 @@ std::vector<Sample> interpolate(const Plan& plan) {
 double chord_error(const Plan& plan, const Sample& a, const Sample& b) {
   if (a.seg == b.seg) {
     const Segment& g = plan.segs[a.seg].geom;
-    if (g.kind == Segment::Kind::Line) return std::max(g.distance(a.p), g.distance(b.p));
+    if (g.kind != Segment::Kind::Arc) return std::max(g.distance(a.p), g.distance(b.p));
     if (!g.helix()) {
       const Vec3 nn = cross(g.u_hat, g.v_hat);
       auto uv = [&](Vec3 p) {
@@ -353,13 +403,20 @@ double chord_error(const Plan& plan, const Sample& a, const Sample& b) {
       return std::max({err, std::fabs(qa[2]), std::fabs(qb[2])});
     }
   }
-  // Sampled, both ways, over every segment the chord spans.
+  // Sampled, both ways, over every segment the chord spans. On a helix the
+  // search for the nearest point is kept to the chord's own stretch of the
+  // path and as much again on each side: another turn is a pitch away, so
+  // the distance found is the true one (and never less).
   constexpr int kN = 16;
   double err = 0;
   for (int j = 0; j <= kN; ++j) {
     const Vec3 p = a.p + (static_cast<double>(j) / kN) * (b.p - a.p);
     double d = kInf;
-    for (int k = a.seg; k <= b.seg; ++k) d = std::min(d, plan.segs[k].geom.distance(p));
+    for (int k = a.seg; k <= b.seg; ++k) {
+      const Segment& g = plan.segs[k].geom;
+      const double s0 = k == a.seg ? a.s : 0, s1 = k == b.seg ? b.s : g.length;
+      d = std::min(d, g.distance_near(p, 2 * s0 - s1 - 1e-3, 2 * s1 - s0 + 1e-3));
+    }
     err = std::max(err, d);
   }
   for (int k = a.seg; k <= b.seg; ++k) {
@@ -390,7 +447,16 @@ Report analyse(const Plan& plan, const std::vector<Sample>& samples) {
       const Vec3 d = samples[n].p - samples[n - 1].p;
       v = (1.0 / T) * d;
       r.peak_feed = std::max(r.peak_feed, norm(d) / T);
-      r.max_chord_error = std::max(r.max_chord_error, chord_error(plan, samples[n - 1], samples[n]));
+      const Sample &a = samples[n - 1], &b = samples[n];
+      const double err = chord_error(plan, a, b);
+      if (a.seg == b.seg || plan.junction_tol.empty()) {
+        r.max_chord_error = std::max(r.max_chord_error, err);
+      } else {  // a chord across one or more corners: within their blend tolerance
+        double lim = 0;
+        for (int k = a.seg + 1; k <= b.seg; ++k) lim = std::max(lim, plan.junction_tol[k]);
+        r.max_blend_error = std::max(r.max_blend_error, err);
+        r.blend_ok = r.blend_ok && err <= lim * (1 + kLimitRelTol);
+      }
     }
     for (int i = 0; i < 3; ++i) {
       r.axes[i].peak_v = std::max(r.axes[i].peak_v, std::fabs(v[i]));
@@ -398,7 +464,7 @@ Report analyse(const Plan& plan, const std::vector<Sample>& samples) {
     }
     v_prev = v;
   }
-  constexpr double kSlack = 1 + 1e-9;
+  constexpr double kSlack = 1 + kLimitRelTol;
   r.tol_ok = r.max_chord_error <= c.tol_mm * kSlack;
   for (auto& ax : r.axes) {
     ax.v_ok = ax.peak_v <= ax.vmax * kSlack;

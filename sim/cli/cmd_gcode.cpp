@@ -22,14 +22,22 @@ using planner::Config;
 
 const char* kHelp =
     "usage: contour gcode FILE [options]\n"
-    "Runs a G-code program (G0-G3, G17-G19, G20/G21, G90/G91; 3D arcs as paper B)\n"
+    "Runs a G-code program (RS274/NGC as LinuxCNC reads it, the subset in\n"
+    "model/gcode/gcode.hpp; 3D arcs as paper B; M S T G4 G43 G54.. as events)\n"
     "through paper B's planner: trapezoidal acc/dec planned on the path, one chord per\n"
     "control cycle within the tolerance. Defaults are paper B's conditions.\n"
     "\noptions:\n"
-    "  --format F        summary (default) or json (total time as \"total_time_s\")\n"
+    "  --format F        summary (default), json (total time as \"total_time_s\"), or moves:\n"
+    "                    the reader's output only, one line per move (RAPID|LINE feed x y z,\n"
+    "                    ARC feed plane CW|CCW x y z cx cy cz), DWELL s, STOP, EVENT code\n"
+    "                    and END, machine mm and mm/min\n"
+    "  --tool-table FILE tool lengths for G43 H, LinuxCNC's format ('T1 P1 Z12.5'), Z in mm\n"
     "  --accel A         acceleration limit of every axis, mm/min^2 (default 3528000 = 0.1 g)\n"
-    "  --cycle MS        control cycle, ms (default 1)\n"
+    "  --cycle MS        control cycle, ms (default 1, at most 1000)\n"
     "  --tol UM          chord tolerance, um (default 0.02)\n"
+    "  --blend-tol UM    corner tolerance of G64 without P, um (default 10): a corner\n"
+    "                    between feed moves is passed at speed when the chord that cuts\n"
+    "                    it stays within this (G64 P sets it per block; G61 stops)\n"
     "  --chord M         chord placement, paper B Fig. 1: a inside, b outside,\n"
     "                    c inside and outside (default c)\n"
     "  --config FILE     machine limits, lines 'key = value' ('#' comments): vmax_x vmax_y\n"
@@ -43,7 +51,8 @@ const char* kHelp =
     "                    drives the 3-axis linear interpolator, pulses spread over the cycle\n"
     "  --steps-per-mm N  with --pulses: steps per mm (default 1000)\n"
     "  --engine E        with --pulses: stage-2 engine, %s (default model)\n"
-    "Exit status: 0 all limits respected, 1 a limit or the tolerance was exceeded,\n"
+    "Exit status: 0 all limits respected, 1 a limit or a tolerance was exceeded by more\n"
+    "than 1e-6 relative (floating-point rounding is not an excess),\n"
     "2 bad input (one line on stderr naming the problem).\n";
 
 std::string stage_names() {
@@ -58,7 +67,14 @@ double positive(const std::string& text, const std::string& what) {
   return v;
 }
 
+// Refuses a path that is a directory (an ifstream opens one and reads nothing).
+void require_regular_file(const std::string& path, const std::string& what) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw UsageError(what + "'" + path + "' is a directory, not a file");
+}
+
 void read_config(const std::string& path, planner::Machine& m) {
+  require_regular_file(path, "--config: ");
   std::ifstream in(path);
   if (!in) throw UsageError("--config: cannot read '" + path + "'");
   std::string line;
@@ -105,6 +121,7 @@ std::string json_string(const std::string& s) {
 }
 
 const char* kind_name(const planner::Segment& g) {
+  if (g.kind == planner::Segment::Kind::Dwell) return g.dwell_s > 0 ? "dwell" : "stop";
   if (g.kind == planner::Segment::Kind::Line) return g.rapid ? "G0 line" : "G1 line";
   if (g.arc3d) return "3D arc";
   if (g.helix()) return "helix";
@@ -211,6 +228,8 @@ int write_svgs(const std::string& dir, const std::string& file, const planner::P
   return files;
 }
 
+constexpr double kMaxCycleS = 1.0;  // --cycle: a control cycle of at most 1 s
+
 ChordMethod parse_chord(const std::string& v) {
   if (v == "a") return ChordMethod::Inside;
   if (v == "b") return ChordMethod::Outside;
@@ -227,10 +246,44 @@ Config parse_config(const Args& a) {
     const double acc = positive(*v, "--accel") / 3600;
     c.machine.amax = {acc, acc, acc};
   }
-  if (auto v = a.option("cycle")) c.cycle_s = positive(*v, "--cycle") / 1000;
+  if (auto v = a.option("cycle")) {
+    c.cycle_s = positive(*v, "--cycle") / 1000;
+    if (c.cycle_s > kMaxCycleS) throw UsageError("--cycle: at most 1000 ms (got '" + *v + "')");
+  }
   if (auto v = a.option("tol")) c.tol_mm = positive(*v, "--tol") / 1000;
+  if (auto v = a.option("blend-tol")) {
+    c.blend_tol_mm = parse_real(*v, "--blend-tol") / 1000;
+    if (!(c.blend_tol_mm >= 0) || !std::isfinite(c.blend_tol_mm))
+      throw UsageError("--blend-tol: must be >= 0 (got '" + *v + "')");
+  }
   if (auto v = a.option("chord")) c.chord = parse_chord(*v);
   return c;
+}
+
+std::string read_text(const std::string& file, const std::string& what) {
+  require_regular_file(file, what);
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw UsageError(what + "cannot read '" + file + "'");
+  std::stringstream buf;
+  buf << in.rdbuf();
+  return buf.str();
+}
+
+gcode::ToolTable read_tool_table(const std::string& file) {
+  try {
+    return gcode::read_tool_table(read_text(file, "--tool-table: "));
+  } catch (const gcode::Error& e) {
+    throw UsageError("--tool-table: " + file + ": " + e.what());
+  }
+}
+
+gcode::Program read_program(const std::string& file, const gcode::Options& o) {
+  const std::string text = read_text(file, "");
+  try {
+    return gcode::read(text, o);
+  } catch (const gcode::Error& e) {
+    throw UsageError(file + ": " + e.what());
+  }
 }
 
 // What the command line asks for, checked.
@@ -240,6 +293,7 @@ struct Request {
   bool pulses = false;        // print the two-stage step stream
   double steps_per_mm = 1000;
   std::string engine;         // the stage-2 engine of --pulses
+  gcode::Options read;        // the tool table
 };
 
 Request parse_request(const Args& a) {
@@ -247,9 +301,10 @@ Request parse_request(const Args& a) {
   a.expect_positional({"FILE"});
   q.file = a.positional()[0];
   q.format = a.option_or("format", "summary");
-  if (q.format != "summary" && q.format != "json")
-    throw UsageError("--format: unknown format '" + q.format + "' (one of summary, json)");
+  if (q.format != "summary" && q.format != "json" && q.format != "moves")
+    throw UsageError("--format: unknown format '" + q.format + "' (one of summary, json, moves)");
   q.config = parse_config(a);
+  if (auto t = a.option("tool-table")) q.read.tools = read_tool_table(*t);
   q.pulses = a.flag("pulses");
   if (!q.pulses && a.option("engine")) throw UsageError("--engine needs --pulses");
   if (!q.pulses && a.option("steps-per-mm")) throw UsageError("--steps-per-mm needs --pulses");
@@ -260,18 +315,6 @@ Request parse_request(const Args& a) {
   if (q.pulses && !planner::pulse_stages().count(q.engine))
     throw UsageError(unknown_engine(q.engine, stage_names()));
   return q;
-}
-
-std::vector<gcode::Block> read_program(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw UsageError("cannot read '" + file + "'");
-  std::stringstream buf;
-  buf << in.rdbuf();
-  try {
-    return gcode::parse(buf.str());
-  } catch (const gcode::Error& e) {
-    throw UsageError(file + ": " + e.what());
-  }
 }
 
 // Plans the program; refuses one that runs more cycles than fit in memory.
@@ -314,12 +357,12 @@ int print_pulses(const Request& q, const std::vector<planner::Sample>& samples) 
 const char* const kAxisNames[] = {"X", "Y", "Z"};
 
 bool limits_respected(const planner::Report& r) {
-  bool all_ok = r.tol_ok;
+  bool all_ok = r.tol_ok && r.blend_ok;
   for (const auto& ax : r.axes) all_ok = all_ok && ax.v_ok && ax.a_ok;
   return all_ok;
 }
 
-void print_json(const Request& q, const planner::Plan& plan, const planner::Report& r) {
+void print_json(const Request& q, const gcode::Program& prog, const planner::Plan& plan, const planner::Report& r) {
   const Config& c = q.config;
   std::ostringstream o;
   o.precision(10);
@@ -327,7 +370,9 @@ void print_json(const Request& q, const planner::Plan& plan, const planner::Repo
     << ", \"cycle_s\": " << c.cycle_s << ", \"total_time_s\": " << r.total_time_s
     << ", \"tolerance_mm\": " << c.tol_mm << ", \"chord_method\": \"" << planner::chord_name(c.chord)
     << "\", \"peak_feed_mm_min\": " << r.peak_feed * 60 << ", \"max_chord_error_mm\": " << r.max_chord_error
-    << ", \"tolerance_ok\": " << (r.tol_ok ? "true" : "false") << ", \"axes\": {";
+    << ", \"tolerance_ok\": " << (r.tol_ok ? "true" : "false") << ", \"blend_tolerance_mm\": " << c.blend_tol_mm
+    << ", \"max_blend_error_mm\": " << r.max_blend_error << ", \"blend_ok\": " << (r.blend_ok ? "true" : "false")
+    << ", \"axes\": {";
   for (int i = 0; i < 3; ++i) {
     const auto& ax = r.axes[i];
     o << (i ? ", " : "") << "\"" << kAxisNames[i] << "\": {\"peak_velocity_mm_min\": " << ax.peak_v * 60
@@ -344,8 +389,17 @@ void print_json(const Request& q, const planner::Plan& plan, const planner::Repo
       << ", \"v_end_mm_min\": " << s.v_end * 60 << ", \"accel_mm_s2\": " << s.a_t << ", \"cap\": \""
       << planner::cap_name(s.cap) << "\"}";
   }
-  o << "], \"all_ok\": " << (limits_respected(r) ? "true" : "false") << "}\n";
+  o << "], \"events\": [";
+  for (std::size_t k = 0; k < prog.events.size(); ++k)
+    o << (k ? ", " : "") << "{\"line\": " << prog.events[k].line << ", \"code\": " << json_string(prog.events[k].code)
+      << "}";
+  o << "], \"program_end\": " << (prog.ended ? "true" : "false") << ", \"all_ok\": " << (limits_respected(r) ? "true" : "false") << "}\n";
   std::fputs(o.str().c_str(), stdout);
+}
+
+void print_events(const gcode::Program& prog) {
+  std::printf("events (%zu):\n", prog.events.size());
+  for (const auto& e : prog.events) std::printf("  line %-4d %s\n", e.line, e.code.c_str());
 }
 
 void print_summary(const Request& q, const planner::Plan& plan, const planner::Report& r) {
@@ -356,6 +410,8 @@ void print_summary(const Request& q, const planner::Plan& plan, const planner::R
   std::printf("peak feed      %.1f mm/min\n", r.peak_feed * 60);
   std::printf("max chord err  %.4f um (tolerance %g um, chord method %s): %s\n", r.max_chord_error * 1000,
               c.tol_mm * 1000, planner::chord_name(c.chord), r.tol_ok ? "ok" : "EXCEEDED");
+  std::printf("max corner err %.4f um (blend tolerance %g um unless G64 P): %s\n", r.max_blend_error * 1000,
+              c.blend_tol_mm * 1000, r.blend_ok ? "ok" : "EXCEEDED");
   std::printf("axis  peak v (mm/min)  limit        peak a (mm/min^2)  limit\n");
   for (int i = 0; i < 3; ++i) {
     const auto& ax = r.axes[i];
@@ -369,15 +425,52 @@ void print_summary(const Request& q, const planner::Plan& plan, const planner::R
                 s.duration, planner::cap_name(s.cap));
 }
 
+// --format moves: the reader's output, one line per move, dwell and event,
+// in machine mm and mm/min (what the rs274 oracle test compares).
+void print_moves(const gcode::Program& prog) {
+  std::string text;
+  char b[320];
+  std::size_t e = 0;
+  auto events_before = [&](std::size_t k) {
+    for (; e < prog.events.size() && prog.events[e].before <= k; ++e)
+      text += "EVENT " + prog.events[e].code + "\n";
+  };
+  for (std::size_t k = 0; k < prog.blocks.size(); ++k) {
+    events_before(k);
+    const gcode::Block& m = prog.blocks[k];
+    const double f = m.feed_mm_s * 60;
+    if (m.is_dwell()) {
+      std::snprintf(b, sizeof b, "%s %.6f\n", m.dwell_s > 0 ? "DWELL" : "STOP", m.dwell_s);
+    } else if (!m.is_arc()) {
+      std::snprintf(b, sizeof b, "%s %.6f %.6f %.6f %.6f\n", m.motion == gcode::Motion::Rapid ? "RAPID" : "LINE", f,
+                    m.end.x, m.end.y, m.end.z);
+    } else {
+      std::snprintf(b, sizeof b, "ARC %.6f %s %s %.6f %.6f %.6f %.6f %.6f %.6f\n", f, gcode::plane_name(m.plane),
+                    m.motion == gcode::Motion::ArcCW ? "CW" : "CCW", m.end.x, m.end.y, m.end.z, m.centre.x,
+                    m.centre.y, m.centre.z);
+    }
+    text += b;
+  }
+  events_before(prog.blocks.size());
+  if (prog.ended) text += "END\n";
+  std::fputs(text.c_str(), stdout);
+}
+
 int run_gcode_command(const std::vector<std::string>& argv) {
   const Args a(argv, {"pulses"},
-               {"format", "accel", "cycle", "tol", "chord", "config", "csv", "svg", "steps-per-mm", "engine"});
+               {"format", "accel", "cycle", "tol", "blend-tol", "chord", "config", "csv", "svg", "steps-per-mm",
+                "engine", "tool-table"});
   if (a.help()) {
     std::printf(kHelp, stage_names().c_str());
     return 0;
   }
   const Request q = parse_request(a);
-  const planner::Plan plan = plan_program(q.file, read_program(q.file), q.config);
+  const gcode::Program prog = read_program(q.file, q.read);
+  if (q.format == "moves") {
+    print_moves(prog);
+    return 0;
+  }
+  const planner::Plan plan = plan_program(q.file, prog.blocks, q.config);
   const auto samples = planner::interpolate(plan);
   if (q.pulses) return print_pulses(q, samples);
 
@@ -386,9 +479,10 @@ int run_gcode_command(const std::vector<std::string>& argv) {
   int svg_files = 0;
   if (auto d = a.option("svg")) svg_files = write_svgs(*d, q.file, plan, samples);
   if (q.format == "json") {
-    print_json(q, plan, r);
+    print_json(q, prog, plan, r);
   } else {
     print_summary(q, plan, r);
+    if (!prog.events.empty()) print_events(prog);
     if (svg_files) std::printf("svg            %d files in %s\n", svg_files, a.option("svg")->c_str());
   }
   return limits_respected(r) ? 0 : 1;
