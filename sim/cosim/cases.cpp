@@ -110,9 +110,19 @@ Suite combined(const std::string& names) {
   return out;
 }
 
-bool engine_runs_at(const std::string& engine, double rate_pps) {
-  if (engine == "iss" || engine == "cpu") return rate_pps <= kMaxRate8085;
-  return true;
+double max_rate(const std::string& engine, double core_hz) {
+  if (engine == "iss" || engine == "cpu") return kMaxRate8085;
+  if (engine == "core") return core_hz / 2;
+  return kMaxRate;
+}
+
+bool engine_runs_at(const std::string& engine, double rate_pps, double core_hz) {
+  return rate_pps <= max_rate(engine, core_hz);
+}
+
+double core_carry_rate(double core_hz, std::uint32_t len, std::uint32_t space, std::uint32_t setup,
+                       std::uint32_t hold) {
+  return core_hz / (double(len) + double(space) + double(setup) + double(hold));
 }
 
 std::vector<Placed> place(const std::vector<Move>& moves) {

@@ -12,6 +12,8 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
@@ -132,6 +134,45 @@ TEST(Scoreboard, TheCoreMayNotLoseUpTo250kppsEvenIfFlagged) {
   EXPECT_EQ(judge(fig2(), expect(fig2()), 1e3, commands(11), run_of("iss", ps, 1)).verdict, Verdict::Fail);
 }
 
+// The keep-up rule follows the programmed output stage: at STEP_LEN =
+// STEP_SPACE = 65535 clocks the core carries 50M / 131090 = 381 pps, so a
+// flagged loss at 1 kpps is FLAGGED, not FAIL; at 300 pps it must keep up.
+TEST(Scoreboard, TheCoreKeepsUpOnlyToWhatItsOutputStageCarries) {
+  auto ps = pulses(kFig2);
+  ps.resize(6);
+  const double carry = core_carry_rate(50e6, 65535, 65535, 10, 10);
+  EXPECT_NEAR(carry, 381.4, 0.1);
+  EXPECT_EQ(judge(fig2(), expect(fig2()), 1e3, commands(11), run_of("core", ps, 5), carry).verdict, Verdict::Flagged);
+  EXPECT_EQ(judge(fig2(), expect(fig2()), 300, commands(11), run_of("core", ps, 5), carry).verdict, Verdict::Fail);
+  EXPECT_EQ(keep_up_rate("core", kDefaultCoreCarry), 250e3);
+}
+
+TEST(Scoreboard, EachEngineHasAStatedCommandRateLimit) {
+  EXPECT_EQ(max_rate("core", 50e6), 25e6);  // the pin, sampled at 50 MHz
+  EXPECT_EQ(max_rate("iss", 50e6), 250e3);
+  EXPECT_EQ(max_rate("cpu", 50e6), 250e3);
+  EXPECT_EQ(max_rate("model", 50e6), 50e6);
+  const Row r = not_run(fig2(), expect(fig2()), "iss", 1e6, 250e3);
+  EXPECT_EQ(r.verdict, Verdict::NotRun);
+  EXPECT_FALSE(r.acceptable());
+  EXPECT_FALSE(r.ran());
+  std::vector<Row> rows(2);
+  rows[0].verdict = Verdict::Pass;
+  rows[1] = r;
+  EXPECT_EQ(verdict_line(rows), "100.00% PASS 1 PASSED, 0 FAILED, 1 NOT RUN");
+}
+
+// A swap loses nothing: the limit table must not call it a loss.
+TEST(Scoreboard, AMismatchIsNotALoss) {
+  auto ps = pulses(kFig2);
+  std::swap(ps[2], ps[3]);
+  std::vector<Row> rows = {judge(fig2(), expect(fig2()), 1e3, commands(11), run_of("core", ps, 0))};
+  const Limit l = limit_of(rows, "fig2", "core");
+  EXPECT_EQ(l.first_loss, 0.0);
+  EXPECT_EQ(l.first_mismatch, 1e3);
+  EXPECT_EQ(l.agree_up_to, 0.0);
+}
+
 TEST(Scoreboard, WrongFinalPositionFails) {
   auto run = run_of("core", pulses(kFig2), 0);
   run.position_known = true;
@@ -159,6 +200,16 @@ TEST(Options, BadInputIsAOneLineUsageError) {
   EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "1k", "--sweep"}, help), UsageError);
   EXPECT_THROW(parse_options({"--suite", "paper", "--sweep", "--inject", "core:melt:3"}, help), UsageError);
   EXPECT_THROW(parse_options({"--suite", "paper", "--sweep", "--case", "fig9"}, help), UsageError);
+  // Empty lists and items, hex and exponents, negative pulse numbers, a
+  // report path that is a file.
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "1k", "--engines", ""}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "1k", "--case", ""}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "1k,"}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "1k", "--engines", "model,,core"}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "0x10"}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "1e3"}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "1k", "--inject", "core:drop:-1"}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "1k", "--report", "/proc/self/status"}, help), UsageError);
   const Options o = parse_options({"--suite", "paper", "--rate", "250k,1M,3.5k"}, help);
   EXPECT_EQ(o.rates, (std::vector<double>{250e3, 1e6, 3.5e3}));
 }
@@ -330,6 +381,60 @@ TEST(CosimRun, SwappedPulsesOnTheCoreAreCaught) {
 
 TEST(CosimRun, FlippedSignOnTheBoardIsCaught) {
   expect_caught(run_with_fault("cpu:flip:12", 1e3, {"fig5"}), "fig5", "cpu", 1e3, 12, "pulse 12: model -X, cpu +X");
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream f(path);
+  std::ostringstream o;
+  o << f.rdbuf();
+  return o.str();
+}
+
+std::string temp_dir(const std::string& name) {
+  const auto d = std::filesystem::temp_directory_path() / ("contour-cosim-test-" + std::to_string(::getpid()) + "-" + name);
+  std::filesystem::remove_all(d);
+  return d.string();
+}
+
+// An injected swap is a mismatch, not a loss, and the page says a fault was
+// injected.
+TEST(CosimRun, InjectedSwapIsReportedAsAMismatchOnAPageThatSaysSo) {
+  Options o = paper_at({1e3});
+  o.faults = {parse_fault("core:swap:3")};
+  o.engines = {"model", "core"};
+  o.cases = {"fig2"};
+  o.report_dir = temp_dir("swap");
+  const auto rows = run_child(o);
+  const ChildRow* r = find(rows, "fig2", "core", 1e3);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->verdict, "FAIL");
+  EXPECT_EQ(r->lost, 0u);
+  const std::string html = read_text(o.report_dir + "/report.html");
+  EXPECT_NE(html.find("A fault was injected: <code>--inject core:swap:3</code>"), std::string::npos);
+  EXPECT_NE(html.find("<th>core: agrees up to</th><th>first loss</th><th>first mismatch</th>"), std::string::npos);
+  const std::string json = read_text(o.report_dir + "/report.json");
+  EXPECT_NE(json.find("{\"case\": \"fig2\", \"engine\": \"core\", \"agrees_up_to_pps\": 0, \"first_loss_pps\": null, "
+                      "\"first_mismatch_pps\": 1000}"),
+            std::string::npos)
+      << json;
+  std::filesystem::remove_all(o.report_dir);
+}
+
+// STEP_LEN = STEP_SPACE = 65535 clocks: the output stage carries 381 pps,
+// so at 1 kpps the core loses pulses, flags each one, and does not FAIL.
+TEST(CosimRun, SlowOutputTimingIsNotAFalseFail) {
+  Options o = paper_at({1e3});
+  o.engines = {"model", "core"};
+  o.timing.len = o.timing.space = 65535;
+  const auto rows = run_child(o);
+  ASSERT_EQ(rows.size(), 4u);
+  for (const char* c : {"fig2", "fig5"}) {
+    const ChildRow* r = find(rows, c, "core", 1e3);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->verdict, "FLAGGED") << c << ": " << r->summary;
+    EXPECT_GT(r->lost, 0u);
+    EXPECT_EQ(static_cast<std::int64_t>(r->lost), r->overruns);
+  }
 }
 
 // The core's clock runs only after command pulses and bus accesses (a

@@ -89,10 +89,15 @@ Fault parse_fault(const std::string& text) {
   if (!known) throw std::invalid_argument("--inject '" + text + "': unknown engine '" + f.engine + "'");
   char* end = nullptr;
   const unsigned long long v = std::strtoull(n.c_str(), &end, 10);
-  if (n.empty() || *end != '\0' || v == 0)
+  if (n.empty() || n.find_first_not_of("0123456789") != std::string::npos || *end != '\0' || v == 0)
     throw std::invalid_argument("--inject '" + text + "': pulse number '" + n + "' is not a positive integer");
   f.at = v;
   return f;
+}
+
+std::string to_string(const Fault& f) {
+  const char* kind = f.kind == Fault::Kind::Drop ? "drop" : f.kind == Fault::Kind::Swap ? "swap" : "flip";
+  return f.engine + ":" + kind + ":" + std::to_string(f.at);
 }
 
 void FaultInjector::pulse(const Pulse& p, const std::string& state) {

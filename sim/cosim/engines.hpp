@@ -76,6 +76,8 @@ struct Fault {
 };
 // "ENGINE:drop:N", "ENGINE:swap:N", "ENGINE:flip:N". Throws std::invalid_argument.
 Fault parse_fault(const std::string& text);
+// The same text back ("core:swap:3").
+std::string to_string(const Fault& f);
 
 class FaultInjector final : public Sink {
  public:

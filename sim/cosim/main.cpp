@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <map>
+#include <string>
+#include <vector>
 
 #include "options.hpp"
 #include "report.hpp"
@@ -13,6 +16,24 @@
 // SystemC prints its banner before sc_main unless told not to; stdout is the
 // run's summary. A static initialiser runs before SystemC's main().
 static const int kNoBanner = ::setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);
+
+namespace {
+
+// One warning line per engine that had NOT RUN rows (above its max_rate).
+void warn_not_run(const std::vector<contour::cosim::Row>& rows) {
+  std::map<std::string, std::pair<std::size_t, std::string>> skipped;  // engine -> (rows, a note)
+  for (const auto& r : rows)
+    if (!r.ran()) {
+      auto& s = skipped[r.engine];
+      ++s.first;
+      s.second = r.note;
+    }
+  for (const auto& [engine, s] : skipped)
+    std::fprintf(stderr, "contour cosim: warning: %zu %s row(s) NOT RUN (%s)\n", s.first, engine.c_str(),
+                 s.second.c_str());
+}
+
+}  // namespace
 
 int sc_main(int argc, char** argv) {
   using namespace contour::cosim;
@@ -31,14 +52,18 @@ int sc_main(int argc, char** argv) {
   }
   try {
     const CosimOutcome out = run_cosim(opt);
+    warn_not_run(out.rows);
     std::printf("%s\n", verdict_line(out.rows).c_str());
     for (const auto& r : out.rows)
-      if (!r.acceptable())
+      if (r.verdict == Verdict::Fail)
         std::printf("FAIL %s %s @ %s pps: %s\n", r.case_name.c_str(), r.engine.c_str(), rate_label(r.rate_pps).c_str(),
                     r.note.c_str());
     for (const auto& f : out.files) std::printf("wrote %s\n", f.c_str());
     std::fflush(stdout);
     return out.ok() ? 0 : 1;
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "contour cosim: %s\n", e.what());
+    return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "contour cosim: %s\n", e.what());
     return 1;

@@ -191,7 +191,8 @@ h2{margin-top:34px;border-bottom:1px solid #ccc;padding-bottom:4px}h3{margin-bot
 table{border-collapse:collapse;margin:8px 0 16px 0;font-size:13px}
 th,td{border:1px solid #ccc;padding:3px 7px;text-align:right}th{background:#f2f2f2}
 td.l,th.l{text-align:left}
-td.PASS{background:#e3f4e3}td.FLAGGED{background:#fff3cd}td.FAIL{background:#f8d0d0;font-weight:bold}td.na{color:#aaa}
+td.PASS{background:#e3f4e3}td.NOTRUN{background:#eee;color:#777}
+p.fault{background:#fbe3e3;border:2px solid #a01818;padding:8px 12px;font-weight:bold}td.FLAGGED{background:#fff3cd}td.FAIL{background:#f8d0d0;font-weight:bold}td.na{color:#aaa}
 pre{background:#f7f7f7;border:1px solid #ddd;padding:8px;font-size:12px;overflow-x:auto}
 .plots{display:flex;flex-wrap:wrap;gap:12px}.plots svg{border:1px solid #eee;background:#fff}
 .meta{color:#555;font-size:13px}code{background:#f2f2f2;padding:1px 4px}
@@ -205,13 +206,18 @@ std::string cell_text(const Row& r) {
   return t;
 }
 
-// Rows counted as the verdict line counts them: acceptable() ones passed.
+// Rows counted as the verdict line counts them: acceptable() ones passed,
+// NOT RUN ones apart.
 struct Tally {
-  std::size_t passed = 0, failed = 0;
+  std::size_t passed = 0, failed = 0, not_run = 0;
 };
 Tally tally(const std::vector<Row>& rows) {
   Tally t;
-  for (const auto& r : rows) (r.acceptable() ? t.passed : t.failed)++;
+  for (const auto& r : rows) {
+    if (r.acceptable()) ++t.passed;
+    else if (r.ran()) ++t.failed;
+    else ++t.not_run;
+  }
   return t;
 }
 
@@ -219,9 +225,11 @@ Tally tally(const std::vector<Row>& rows) {
 
 std::string verdict_line(const std::vector<Row>& rows) {
   const Tally t = tally(rows);
-  const double pct = rows.empty() ? 0.0 : 100.0 * double(t.passed) / double(rows.size());
+  const std::size_t ran = t.passed + t.failed;
+  const double pct = ran == 0 ? 0.0 : 100.0 * double(t.passed) / double(ran);
   return fmt("%.2f%%", pct) + (t.failed == 0 && t.passed > 0 ? " PASS " : " FAIL ") + std::to_string(t.passed) +
-         " PASSED, " + std::to_string(t.failed) + " FAILED";
+         " PASSED, " + std::to_string(t.failed) + " FAILED" +
+         (t.not_run ? ", " + std::to_string(t.not_run) + " NOT RUN" : "");
 }
 
 Limit limit_of(const std::vector<Row>& rows, const std::string& case_name, const std::string& engine) {
@@ -230,12 +238,13 @@ Limit limit_of(const std::vector<Row>& rows, const std::string& case_name, const
   for (const auto& r : rows)
     if (r.case_name == case_name && r.engine == engine) rs.push_back(&r);
   std::sort(rs.begin(), rs.end(), [](const Row* a, const Row* b) { return a->rate_pps < b->rate_pps; });
+  bool agreeing = true;
   for (const Row* r : rs) {
-    if (r->lost == 0 && r->mismatches == 0) {
-      if (l.first_loss == 0) l.agree_up_to = r->rate_pps;
-    } else if (l.first_loss == 0) {
-      l.first_loss = r->rate_pps;
-    }
+    if (!r->ran()) continue;
+    if (r->lost > 0 && l.first_loss == 0) l.first_loss = r->rate_pps;
+    if (r->mismatches > 0 && l.first_mismatch == 0) l.first_mismatch = r->rate_pps;
+    agreeing = agreeing && r->lost == 0 && r->mismatches == 0;
+    if (agreeing) l.agree_up_to = r->rate_pps;
   }
   return l;
 }
@@ -272,7 +281,8 @@ void write_json_limits(std::ostream& j, const ReportInput& in, const std::vector
       const Limit l = limit_of(in.rows, c.name, e);
       j << (first ? "" : ",\n") << "    {\"case\": " << json_str(c.name) << ", \"engine\": " << json_str(e)
         << ", \"agrees_up_to_pps\": " << fmt("%.0f", l.agree_up_to) << ", \"first_loss_pps\": "
-        << (l.first_loss > 0 ? fmt("%.0f", l.first_loss) : std::string("null")) << "}";
+        << (l.first_loss > 0 ? fmt("%.0f", l.first_loss) : std::string("null")) << ", \"first_mismatch_pps\": "
+        << (l.first_mismatch > 0 ? fmt("%.0f", l.first_mismatch) : std::string("null")) << "}";
       first = false;
     }
 }
@@ -298,7 +308,9 @@ std::string report_json(const ReportInput& in, const std::string& verdict, const
 void write_testcase(std::ostream& x, const std::string& suite, const Row& r) {
   x << "    <testcase classname=\"cosim." << xml_attr(suite + "." + r.case_name) << "\" name=\""
     << xml_attr(r.engine + "@" + rate_label(r.rate_pps)) << "\"";
-  if (r.acceptable()) {
+  if (!r.ran()) {
+    x << "><skipped message=\"" << xml_attr(r.note) << "\"/></testcase>\n";
+  } else if (r.acceptable()) {
     x << ">";
     if (!r.note.empty()) x << "<system-out>" << escape(r.note) << "</system-out>";
     x << "</testcase>\n";
@@ -310,10 +322,11 @@ void write_testcase(std::ostream& x, const std::string& suite, const Row& r) {
 
 std::string junit_xml(const ReportInput& in) {
   std::ostringstream x;
-  const std::size_t fail = tally(in.rows).failed;
+  const Tally t = tally(in.rows);
   x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"contour cosim\" tests=\"" << in.rows.size()
-    << "\" failures=\"" << fail << "\">\n  <testsuite name=\"cosim." << xml_attr(in.suite) << "\" tests=\""
-    << in.rows.size() << "\" failures=\"" << fail << "\" time=\"" << fmt("%.3f", in.wall_seconds) << "\">\n";
+    << "\" failures=\"" << t.failed << "\" skipped=\"" << t.not_run << "\">\n  <testsuite name=\"cosim."
+    << xml_attr(in.suite) << "\" tests=\"" << in.rows.size() << "\" failures=\"" << t.failed << "\" skipped=\""
+    << t.not_run << "\" time=\"" << fmt("%.3f", in.wall_seconds) << "\">\n";
   for (const auto& r : in.rows) write_testcase(x, in.suite, r);
   x << "  </testsuite>\n</testsuites>\n";
   return x.str();
@@ -336,10 +349,19 @@ void write_html_head(std::ostream& h, const ReportInput& in, const std::string& 
     << "Clocks: core " << fmt("%g", in.opt.core_hz / 1e6) << " MHz (output stage STEP_LEN " << in.opt.timing.len
     << ", STEP_SPACE " << in.opt.timing.space << ", DIR_SETUP " << in.opt.timing.setup << ", DIR_HOLD "
     << in.opt.timing.hold << " clocks), 8085 " << fmt("%g", in.opt.cpu_hz / 1e6) << " MHz. "
-    << "The 8085 engines run up to " << rate_label(kMaxRate8085) << " pps.</p>\n";
+    << "Command rates each engine takes: the core up to " << rate_label(max_rate("core", in.opt.core_hz))
+    << " pps (its pin is sampled at " << fmt("%g", in.opt.core_hz / 1e6) << " MHz), the 8085 engines up to "
+    << rate_label(kMaxRate8085) << " pps (above: NOT RUN).</p>\n";
+  for (const auto& f : in.opt.faults)
+    h << "<p class=\"fault\">A fault was injected: <code>--inject " << escape(to_string(f))
+      << "</code> corrupts the " << escape(f.engine)
+      << " engine's output on its way to the scoreboard. This run tests the scoreboard: the failures it causes "
+         "are planted, not the engine's.</p>\n";
 }
 
-std::string how_to_read() {
+std::string how_to_read(const ReportInput& in) {
+  const StepTiming& t = in.opt.timing;
+  const double carry = core_carry_rate(in.opt.core_hz, t.len, t.space, t.setup, t.hold);
   return "<h2>How to read this</h2><p class=\"meta\">Every engine gets the same command pulse train (N pulses at the "
          "rate, N = the model's output pulse count). Its output pulses are compared one by one with the golden "
          "model's (axis, sign, order); <b>lost</b> = command pulses that gave no output pulse, <b>overruns</b> = the "
@@ -347,8 +369,11 @@ std::string how_to_read() {
          "<b>PASS</b>: identical pulses, nothing lost. <b>FLAGGED</b>: the pulses given are the model's, and every "
          "lost command pulse was flagged (allowed above an engine's limit). <b>FAIL</b>: a pulse differs, a loss was "
          "not flagged, the final position is wrong, or an engine lost pulses where it must keep up (the core up to "
-         + rate_label(kCoreRequiredRate) + " pps, the 8085 up to " + rate_label(kRequiredRate8085) +
-         " pps). Cells read <i>verdict lost/overruns</i>. In a divergence, <i>at (x, y)</i> is the position on the "
+         + rate_label(keep_up_rate("core", carry)) + " pps: paper A's " + rate_label(kCoreRequiredRate) +
+         " pps or what its output stage carries at the programmed timing, " + fmt("%g", in.opt.core_hz / 1e6) +
+         " MHz / (STEP_LEN + STEP_SPACE + DIR_SETUP + DIR_HOLD) = " + rate_label(carry) +
+         " pps, whichever is lower; the 8085 up to " + rate_label(kRequiredRate8085) + " pps). <b>NOT RUN</b>: the "
+         "engine cannot take the rate. Cells read <i>verdict lost/overruns</i>. In a divergence, <i>at (x, y)</i> is the position on the "
          "case's path (its start is (0, 0)); the states are in the move's own frame (a line from its start, an arc "
          "from its centre), as in docs/algorithm.md.</p>\n";
 }
@@ -356,14 +381,16 @@ std::string how_to_read() {
 // Where each engine falls behind: a table and the lost-pulse plots.
 void write_html_limits(std::ostream& h, const ReportInput& in, const std::vector<std::string>& engines) {
   h << "<h2>Where each engine falls behind</h2>\n<table><tr><th class=\"l\">case</th>";
-  for (const auto& e : engines) h << "<th>" << escape(e) << ": agrees up to</th><th>first loss</th>";
+  for (const auto& e : engines)
+    h << "<th>" << escape(e) << ": agrees up to</th><th>first loss</th><th>first mismatch</th>";
   h << "</tr>\n";
   for (const auto& c : in.cases) {
     h << "<tr><td class=\"l\">" << escape(c.name) << "</td>";
     for (const auto& e : engines) {
       const Limit l = limit_of(in.rows, c.name, e);
       h << "<td>" << (l.agree_up_to > 0 ? rate_label(l.agree_up_to) + " pps" : "-") << "</td><td>"
-        << (l.first_loss > 0 ? rate_label(l.first_loss) + " pps" : "none") << "</td>";
+        << (l.first_loss > 0 ? rate_label(l.first_loss) + " pps" : "none") << "</td><td"
+        << (l.first_mismatch > 0 ? " class=\"FAIL\">" + rate_label(l.first_mismatch) + " pps" : ">none") << "</td>";
     }
     h << "</tr>\n";
   }
@@ -377,7 +404,7 @@ void write_html_limits(std::ostream& h, const ReportInput& in, const std::vector
 void write_html_failures(std::ostream& h, const std::vector<Row>& rows) {
   std::vector<const Row*> failed;
   for (const auto& r : rows)
-    if (!r.acceptable()) failed.push_back(&r);
+    if (r.verdict == Verdict::Fail) failed.push_back(&r);
   h << "<h2>Failures (" << failed.size() << ")</h2>\n";
   if (failed.empty()) h << "<p>None.</p>\n";
   for (const Row* r : failed) {
@@ -414,7 +441,7 @@ void write_rate_row(std::ostream& h, const ReportInput& in, const Case& c, doubl
     }
     if (e == "core") lat[0] = found;
     if (e == "cpu") lat[1] = found;
-    h << "<td class=\"" << to_string(found->verdict) << "\" title=\"" << xml_attr(found->note) << "\">"
+    h << "<td class=\"" << css_class(found->verdict) << "\" title=\"" << xml_attr(found->note) << "\">"
       << cell_text(*found) << "</td>";
   }
   for (const Row* r : lat) h << latency_cell(r);
@@ -449,7 +476,7 @@ void write_html_all_results(std::ostream& h, const std::vector<Row>& rows) {
     h << "<tr><td class=\"l\">" << escape(r.case_name) << "</td><td class=\"l\">" << escape(r.engine) << "</td><td>"
       << rate_label(r.rate_pps) << "</td><td>" << r.commands << "</td><td>" << r.pulses << "</td><td>" << r.mismatches
       << "</td><td>" << r.lost << "</td><td>" << (r.overruns < 0 ? std::string("-") : std::to_string(r.overruns))
-      << "</td><td class=\"" << to_string(r.verdict) << "\">" << to_string(r.verdict) << "</td><td class=\"l\">"
+      << "</td><td class=\"" << css_class(r.verdict) << "\">" << to_string(r.verdict) << "</td><td class=\"l\">"
       << escape(r.note) << "</td></tr>\n";
   h << "</table></details>\n";
 }
@@ -457,7 +484,7 @@ void write_html_all_results(std::ostream& h, const std::vector<Row>& rows) {
 std::string report_html(const ReportInput& in, const std::string& verdict, const std::vector<std::string>& engines) {
   std::ostringstream h;
   write_html_head(h, in, verdict, engines);
-  h << how_to_read();
+  h << how_to_read(in);
   write_html_limits(h, in, engines);
   write_html_failures(h, in.rows);
   h << "<h2>Cases</h2>\n";

@@ -23,14 +23,18 @@ struct ReportInput {
   const Options& opt;
 };
 
-// "100.00% PASS 40 PASSED, 0 FAILED" (or "... FAIL ..."): the first line of
-// every report and of the program's output.
+// "100.00% PASS 40 PASSED, 0 FAILED" (or "... FAIL ..."; ", 4 NOT RUN"
+// appended when some rows did not run; the percentage is of the rows that
+// ran): the first line of every report and of the program's output.
 std::string verdict_line(const std::vector<Row>& rows);
 
-// The highest rate of the sweep at which `engine` lost nothing on `case_name`
-// and the lowest at which it lost pulses (0 when there is none).
+// Over the rates that ran: the highest rate up to which `engine` agreed
+// on `case_name` at every rate (nothing lost, no pulse different), the
+// lowest rate at which it lost command pulses, and the lowest at which a
+// pulse differed from the model's (0 when there is none). A mismatch is
+// not a loss: an injected swap loses nothing.
 struct Limit {
-  double agree_up_to = 0, first_loss = 0;
+  double agree_up_to = 0, first_loss = 0, first_mismatch = 0;
 };
 Limit limit_of(const std::vector<Row>& rows, const std::string& case_name, const std::string& engine);
 

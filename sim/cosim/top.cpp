@@ -11,6 +11,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "options.hpp"
 #include "report.hpp"
 
 using sc_core::sc_time;
@@ -77,7 +78,7 @@ class Top : public sc_core::sc_module {
     for (double r : rates_)
       for (const auto& c : cases_)
         for (const auto& s : slots_)
-          if (runs(c, r) && engine_runs_at(s->engine->engine(), r)) ++total;
+          if (runs(c, r) && engine_runs_at(s->engine->engine(), r, opt_.core_hz)) ++total;
     for (double rate : rates_) {
       for (std::size_t ci = 0; ci < cases_.size(); ++ci) {
         const Case& c = cases_[ci];
@@ -85,8 +86,12 @@ class Top : public sc_core::sc_module {
         const Expected& exp = exps_[ci];
         std::vector<Slot*> act;
         std::map<Slot*, std::string> errors;
-        for (auto& s : slots_)
-          if (engine_runs_at(s->engine->engine(), rate)) act.push_back(s.get());
+        for (auto& s : slots_) {
+          const std::string e = s->engine->engine();
+          if (engine_runs_at(e, rate, opt_.core_hz)) act.push_back(s.get());
+          else rows.push_back(not_run(c, exp, e, rate, max_rate(e, opt_.core_hz)));
+        }
+        const auto wall0 = std::chrono::steady_clock::now();
         for (Slot* s : act) {
           if (s->fault) s->fault->reset();
           s->rec.start(sc_core::sc_time_stamp());
@@ -122,9 +127,13 @@ class Top : public sc_core::sc_module {
           }
           if (errors.count(s)) run.error = errors[s] + (run.error.empty() ? "" : "; " + run.error);
           run.out = s->rec.out;
-          rows.push_back(judge(c, exp, rate, cmd_us, run));
+          rows.push_back(judge(c, exp, rate, cmd_us, run, carry_));
+          rows.back().case_start_us = t0.to_seconds() * 1e6;
           progress(++done, total, c.name + " " + run.engine + " @ " + rate_label(rate) + " pps");
         }
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+        for (std::size_t k = rows.size() - act.size(); k < rows.size(); ++k)
+          rows[k].wall_seconds = wall / double(act.size());
       }
     }
     sc_core::sc_stop();
@@ -136,9 +145,36 @@ class Top : public sc_core::sc_module {
   const std::vector<double>& rates_;
   std::vector<std::unique_ptr<Slot>> slots_;
   sc_core::sc_signal<bool> cmd_{"cmd"};
+  // What the core's programmed output stage carries (the keep-up rule).
+  const double carry_ =
+      core_carry_rate(opt_.core_hz, opt_.timing.len, opt_.timing.space, opt_.timing.setup, opt_.timing.hold);
 };
 
 bool g_ran = false;
+
+// Every rate within 1 .. kMaxRate, and none above what a chosen engine's
+// input can carry (the core's pin); the 8085 engines' rows say NOT RUN.
+void check_rates(const std::vector<double>& rates, const Options& opt) {
+  for (double r : rates) {
+    if (!(r >= 1 && r <= kMaxRate))
+      throw UsageError("--rate " + rate_label(r) + " pps is outside 1 .. " + rate_label(kMaxRate));
+    if (opt.engines.count("core") && r > max_rate("core", opt.core_hz))
+      throw UsageError("--rate " + rate_label(r) + " pps: the core's command pin is sampled at " +
+                       rate_label(opt.core_hz / 1e6) + " MHz, so it carries at most " +
+                       rate_label(max_rate("core", opt.core_hz)) + " pps (leave out the core with --engines)");
+  }
+}
+
+// The report directory, made if missing; a file in its place, or one that
+// cannot be made, is bad input (UsageError).
+void make_report_dir(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw UsageError("--report '" + dir + "' is a file, not a directory");
+  fs::create_directories(dir, ec);
+  if (ec) throw UsageError("--report '" + dir + "': cannot make the directory (" + ec.message() + ")");
+}
 
 }  // namespace
 
@@ -162,11 +198,10 @@ CosimOutcome run_cosim(const Options& opt) {
   const std::vector<double> rates = opt.rates.empty() ? s.rates : opt.rates;
   if (!opt.rates.empty())
     for (auto& c : cases) c.rates = opt.rates;
-  for (double r : rates)
-    if (!(r >= 1 && r <= 50e6)) throw std::invalid_argument("rate " + std::to_string(r) + " pps is outside 1 .. 50M");
+  check_rates(rates, opt);
 
-  std::string dir = opt.report_dir.empty() ? "." : opt.report_dir;
-  if (!opt.report_dir.empty() || opt.trace) std::filesystem::create_directories(dir);
+  const std::string dir = opt.report_dir.empty() ? "." : opt.report_dir;
+  if (!opt.report_dir.empty() || opt.trace) make_report_dir(dir);
   const std::string rom = (std::filesystem::temp_directory_path() /
                            ("contour-cosim-rom-" + std::to_string(::getpid()) + ".memh")).string();
   if (opt.engines.count("cpu")) write_rom_memh(rom);
@@ -196,7 +231,11 @@ CosimOutcome run_cosim(const Options& opt) {
     out.rows = std::move(top.rows);
   }
   if (opt.engines.count("cpu")) std::filesystem::remove(rom);
-  for (const auto& r : out.rows) (r.acceptable() ? out.passed : out.failed)++;
+  for (const auto& r : out.rows) {
+    if (r.acceptable()) ++out.passed;
+    else if (r.ran()) ++out.failed;
+    else ++out.not_run;
+  }
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   if (!opt.report_dir.empty()) {
     ReportInput in{s.name, cases, exps, rates, out.rows, opt.command_line, out.sim_seconds, out.wall_seconds, opt};
