@@ -420,6 +420,62 @@ TEST(CosimRun, InjectedSwapIsReportedAsAMismatchOnAPageThatSaysSo) {
   std::filesystem::remove_all(o.report_dir);
 }
 
+// The report: rows only for the rates that ran, the header counts what ran,
+// a re-run command and absolute times for each failing row, links to the
+// traces, schema_version in the JSON, time in every JUnit testcase.
+TEST(CosimRun, ReportShowsWhatRanAndHowToReRunAFailure) {
+  Options o = paper_at({2e3, 1e6});
+  o.faults = {parse_fault("iss:flip:2")};
+  o.engines = {"model", "iss"};
+  o.cases = {"fig5"};
+  o.trace = true;  // no Verilated engine: no trace file
+  o.report_dir = temp_dir("report");
+  const auto rows = run_child(o);
+  ASSERT_EQ(rows.size(), 4u);
+  const ChildRow* nr = find(rows, "fig5", "iss", 1e6);
+  ASSERT_TRUE(nr);
+  EXPECT_EQ(nr->verdict, "NOT RUN");
+  const std::string html = read_text(o.report_dir + "/report.html");
+  EXPECT_NE(html.find("1 case(s), 2 (case, rate) run(s) at 2 rate(s) from 2k to 1M pps; 3 row(s) ran (2 passed, 1 "
+                      "failed), 1 NOT RUN"),
+            std::string::npos)
+      << html.substr(0, 3000);
+  EXPECT_NE(html.find("Re-run this row alone: <code>contour cosim --suite paper --case fig5 --rate 2k --engines "
+                      "model,iss --inject iss:flip:2</code>"),
+            std::string::npos);
+  EXPECT_NE(html.find("the first divergence came at "), std::string::npos);
+  EXPECT_EQ(html.find("<tr><td>250k</td>"), std::string::npos);  // no row for a rate that did not run
+  EXPECT_NE(html.find("<td class=\"NOTRUN\""), std::string::npos);
+  const std::string json = read_text(o.report_dir + "/report.json");
+  EXPECT_EQ(json.rfind("{\n  \"schema_version\": 2,\n", 0), 0u) << json.substr(0, 200);
+  EXPECT_NE(json.find("\"rerun\": \"contour cosim --suite paper --case fig5 --rate 2k --engines model,iss --inject "
+                      "iss:flip:2\""),
+            std::string::npos);
+  EXPECT_NE(json.find("\"sim_time_us\": "), std::string::npos);
+  const std::string junit = read_text(o.report_dir + "/junit.xml");
+  std::size_t cases = 0, timed = 0;
+  for (std::size_t at = 0; (at = junit.find("<testcase ", at)) != std::string::npos; ++at, ++cases)
+    timed += junit.compare(junit.find('>', at) - 1, 1, "\"") == 0 &&
+             junit.substr(at, junit.find('>', at) - at).find(" time=\"") != std::string::npos;
+  EXPECT_EQ(cases, 4u);
+  EXPECT_EQ(timed, 4u) << junit;
+  EXPECT_NE(junit.find("<skipped message="), std::string::npos);
+  std::filesystem::remove_all(o.report_dir);
+}
+
+// The core's FST trace is linked from the page, relative to it.
+TEST(CosimRun, ReportLinksTheTraces) {
+  Options o = paper_at({100e3});
+  o.engines = {"model", "core"};
+  o.cases = {"fig2"};
+  o.trace = true;
+  o.report_dir = temp_dir("trace");
+  run_child(o);
+  EXPECT_TRUE(std::filesystem::exists(o.report_dir + "/core.fst"));
+  EXPECT_NE(read_text(o.report_dir + "/report.html").find("<a href=\"core.fst\">core.fst</a>"), std::string::npos);
+  std::filesystem::remove_all(o.report_dir);
+}
+
 // STEP_LEN = STEP_SPACE = 65535 clocks: the output stage carries 381 pps,
 // so at 1 kpps the core loses pulses, flags each one, and does not FAIL.
 TEST(CosimRun, SlowOutputTimingIsNotAFalseFail) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <numbers>
@@ -232,6 +233,24 @@ std::string verdict_line(const std::vector<Row>& rows) {
          (t.not_run ? ", " + std::to_string(t.not_run) + " NOT RUN" : "");
 }
 
+std::string rerun_command(const Row& r, const Options& opt) {
+  std::string suite_name;
+  for (const auto& n : suite_names()) {
+    for (const auto& c : suite(n).cases)
+      if (c.name == r.case_name) suite_name = n;
+    if (!suite_name.empty()) break;
+  }
+  std::string cmd = "contour cosim --suite " + suite_name + " --case " + r.case_name + " --rate " +
+                    rate_label(r.rate_pps) + " --engines " + (r.engine == "model" ? "model" : "model," + r.engine);
+  const StepTiming def;
+  if (opt.timing.len != def.len) cmd += " --step-len " + std::to_string(opt.timing.len);
+  if (opt.timing.space != def.space) cmd += " --step-space " + std::to_string(opt.timing.space);
+  if (opt.free_clock) cmd += " --free-clock";
+  for (const auto& f : opt.faults)
+    if (f.engine == r.engine) cmd += " --inject " + to_string(f);
+  return cmd;
+}
+
 Limit limit_of(const std::vector<Row>& rows, const std::string& case_name, const std::string& engine) {
   Limit l;
   std::vector<const Row*> rs;
@@ -262,16 +281,21 @@ std::string json_latency(const Row& r) {
 std::string json_divergence(const Row& r) {
   if (!r.divergence) return ", \"first_divergence\": null";
   return ", \"first_divergence\": {\"pulse\": " + std::to_string(r.divergence->index) +
-         ", \"summary\": " + json_str(r.divergence->summary) + "}";
+         ", \"summary\": " + json_str(r.divergence->summary) + ", \"t_us\": " +
+         (r.divergence->t_us < 0 ? std::string("null") : fmt("%.3f", r.divergence->t_us)) + ", \"sim_time_us\": " +
+         (r.divergence->t_us < 0 ? std::string("null") : fmt("%.3f", r.case_start_us + r.divergence->t_us)) + "}";
 }
 
-void write_json_result(std::ostream& j, const Row& r) {
+void write_json_result(std::ostream& j, const Row& r, const Options& opt) {
   j << "    {\"case\": " << json_str(r.case_name) << ", \"engine\": " << json_str(r.engine)
     << ", \"rate_pps\": " << fmt("%.0f", r.rate_pps) << ", \"pulses\": " << r.pulses
     << ", \"mismatches\": " << r.mismatches << ", \"lost\": " << r.lost << ", \"overruns\": " << r.overruns
     << ", \"verdict\": " << json_str(to_string(r.verdict)) << ", \"expected\": " << r.expected
     << ", \"commands\": " << r.commands << ", \"required\": " << (r.required ? "true" : "false");
-  j << json_latency(r) << json_divergence(r) << ", \"note\": " << json_str(r.note) << "}";
+  j << ", \"case_start_us\": " << fmt("%.3f", r.case_start_us) << ", \"wall_seconds\": " << fmt("%.4f", r.wall_seconds);
+  j << json_latency(r) << json_divergence(r) << ", \"note\": " << json_str(r.note);
+  if (r.verdict == Verdict::Fail) j << ", \"rerun\": " << json_str(rerun_command(r, opt));
+  j << "}";
 }
 
 void write_json_limits(std::ostream& j, const ReportInput& in, const std::vector<std::string>& engines) {
@@ -290,11 +314,12 @@ void write_json_limits(std::ostream& j, const ReportInput& in, const std::vector
 std::string report_json(const ReportInput& in, const std::string& verdict, const std::vector<std::string>& engines) {
   std::ostringstream j;
   const Tally t = tally(in.rows);
-  j << "{\n  \"verdict\": " << json_str(verdict) << ",\n  \"suite\": " << json_str(in.suite)
-    << ",\n  \"passed\": " << t.passed << ",\n  \"failed\": " << t.failed << ",\n  \"command\": " << json_str(in.command)
+  j << "{\n  \"schema_version\": " << kReportSchemaVersion << ",\n  \"verdict\": " << json_str(verdict)
+    << ",\n  \"suite\": " << json_str(in.suite) << ",\n  \"passed\": " << t.passed << ",\n  \"failed\": " << t.failed
+    << ",\n  \"not_run\": " << t.not_run << ",\n  \"command\": " << json_str(in.command)
     << ",\n  \"sim_seconds\": " << fmt("%.6f", in.sim_seconds) << ",\n  \"results\": [\n";
   for (std::size_t i = 0; i < in.rows.size(); ++i) {
-    write_json_result(j, in.rows[i]);
+    write_json_result(j, in.rows[i], in.opt);
     j << (i + 1 < in.rows.size() ? "," : "") << "\n";
   }
   j << "  ],\n  \"limits\": [\n";
@@ -305,9 +330,9 @@ std::string report_json(const ReportInput& in, const std::string& verdict, const
 
 // --- junit.xml -----------------------------------------------------------------
 
-void write_testcase(std::ostream& x, const std::string& suite, const Row& r) {
+void write_testcase(std::ostream& x, const std::string& suite, const Row& r, const Options& opt) {
   x << "    <testcase classname=\"cosim." << xml_attr(suite + "." + r.case_name) << "\" name=\""
-    << xml_attr(r.engine + "@" + rate_label(r.rate_pps)) << "\"";
+    << xml_attr(r.engine + "@" + rate_label(r.rate_pps)) << "\" time=\"" << fmt("%.4f", r.wall_seconds) << "\"";
   if (!r.ran()) {
     x << "><skipped message=\"" << xml_attr(r.note) << "\"/></testcase>\n";
   } else if (r.acceptable()) {
@@ -316,7 +341,8 @@ void write_testcase(std::ostream& x, const std::string& suite, const Row& r) {
     x << "</testcase>\n";
   } else {
     x << ">\n      <failure message=\"" << xml_attr(r.note) << "\">"
-      << escape(r.divergence ? r.divergence->context : r.note) << "</failure>\n    </testcase>\n";
+      << escape((r.divergence ? r.divergence->context : r.note) + "\nre-run: " + rerun_command(r, opt))
+      << "</failure>\n    </testcase>\n";
   }
 }
 
@@ -327,12 +353,29 @@ std::string junit_xml(const ReportInput& in) {
     << "\" failures=\"" << t.failed << "\" skipped=\"" << t.not_run << "\">\n  <testsuite name=\"cosim."
     << xml_attr(in.suite) << "\" tests=\"" << in.rows.size() << "\" failures=\"" << t.failed << "\" skipped=\""
     << t.not_run << "\" time=\"" << fmt("%.3f", in.wall_seconds) << "\">\n";
-  for (const auto& r : in.rows) write_testcase(x, in.suite, r);
+  for (const auto& r : in.rows) write_testcase(x, in.suite, r, in.opt);
   x << "  </testsuite>\n</testsuites>\n";
   return x.str();
 }
 
 // --- report.html ---------------------------------------------------------------
+
+// Links to the FST traces of the run (--trace), relative when they sit in
+// the report's directory.
+void write_html_traces(std::ostream& h, const ReportInput& in) {
+  if (in.traces.empty()) return;
+  namespace fs = std::filesystem;
+  h << "<p class=\"meta\">Waveforms (FST, e.g. <code>gtkwave FILE</code>; SystemC time as in the failures below): ";
+  for (std::size_t i = 0; i < in.traces.size(); ++i) {
+    const fs::path p(in.traces[i]);
+    std::error_code ec;
+    const bool here = fs::equivalent(p.parent_path().empty() ? fs::path(".") : p.parent_path(),
+                                     in.opt.report_dir.empty() ? fs::path(".") : fs::path(in.opt.report_dir), ec);
+    const std::string href = here ? p.filename().string() : fs::absolute(p).string();
+    h << (i ? ", " : "") << "<a href=\"" << xml_attr(href) << "\">" << escape(p.filename().string()) << "</a>";
+  }
+  h << "</p>\n";
+}
 
 void write_html_head(std::ostream& h, const ReportInput& in, const std::string& verdict,
                      const std::vector<std::string>& engines) {
@@ -341,8 +384,17 @@ void write_html_head(std::ostream& h, const ReportInput& in, const std::string& 
     << "<title>contour cosim " << escape(in.suite) << ": " << escape(verdict) << "</title><style>" << css()
     << "</style></head><body>\n";
   h << "<h1 class=\"" << (ok ? "pass" : "fail") << "\">" << escape(verdict) << "</h1>\n";
-  h << "<p class=\"meta\">Suite <b>" << escape(in.suite) << "</b>: " << in.cases.size() << " case(s) &times; "
-    << in.rates.size() << " rate(s), engines ";
+  const Tally t = tally(in.rows);
+  std::set<std::pair<std::string, double>> runs;
+  std::set<double> rates;
+  for (const auto& r : in.rows)
+    if (r.ran()) runs.insert({r.case_name, r.rate_pps}), rates.insert(r.rate_pps);
+  h << "<p class=\"meta\">Suite <b>" << escape(in.suite) << "</b>: " << in.cases.size() << " case(s), "
+    << runs.size() << " (case, rate) run(s) at " << rates.size() << " rate(s)";
+  if (!rates.empty()) h << " from " << rate_label(*rates.begin()) << " to " << rate_label(*rates.rbegin()) << " pps";
+  h << "; " << t.passed + t.failed << " row(s) ran (" << t.passed << " passed, " << t.failed << " failed)";
+  if (t.not_run) h << ", " << t.not_run << " NOT RUN";
+  h << "; engines ";
   for (std::size_t i = 0; i < engines.size(); ++i) h << (i ? ", " : "") << "<b>" << escape(engines[i]) << "</b>";
   h << ". Simulated " << fmt("%.3f", in.sim_seconds) << " s of SystemC time in " << fmt("%.1f", in.wall_seconds)
     << " s.<br>Command: <code>" << escape(in.command) << "</code><br>"
@@ -352,6 +404,7 @@ void write_html_head(std::ostream& h, const ReportInput& in, const std::string& 
     << "Command rates each engine takes: the core up to " << rate_label(max_rate("core", in.opt.core_hz))
     << " pps (its pin is sampled at " << fmt("%g", in.opt.core_hz / 1e6) << " MHz), the 8085 engines up to "
     << rate_label(kMaxRate8085) << " pps (above: NOT RUN).</p>\n";
+  write_html_traces(h, in);
   for (const auto& f : in.opt.faults)
     h << "<p class=\"fault\">A fault was injected: <code>--inject " << escape(to_string(f))
       << "</code> corrupts the " << escape(f.engine)
@@ -401,7 +454,7 @@ void write_html_limits(std::ostream& h, const ReportInput& in, const std::vector
   h << "</div>\n";
 }
 
-void write_html_failures(std::ostream& h, const std::vector<Row>& rows) {
+void write_html_failures(std::ostream& h, const std::vector<Row>& rows, const Options& opt) {
   std::vector<const Row*> failed;
   for (const auto& r : rows)
     if (r.verdict == Verdict::Fail) failed.push_back(&r);
@@ -409,7 +462,12 @@ void write_html_failures(std::ostream& h, const std::vector<Row>& rows) {
   if (failed.empty()) h << "<p>None.</p>\n";
   for (const Row* r : failed) {
     h << "<h3>" << escape(r->case_name) << " on " << escape(r->engine) << " at " << rate_label(r->rate_pps)
-      << " pps</h3><p>" << escape(r->note) << "</p>\n";
+      << " pps</h3><p>" << escape(r->note) << "</p>\n<p class=\"meta\">The case started at SystemC time "
+      << fmt("%.3f", r->case_start_us) << " us";
+    if (r->divergence && r->divergence->t_us >= 0)
+      h << "; the first divergence came at " << fmt("%.3f", r->case_start_us + r->divergence->t_us) << " us (t = "
+        << fmt("%.3f", r->divergence->t_us) << " us into the case)";
+    h << ". Re-run this row alone: <code>" << escape(rerun_command(*r, opt)) << "</code></p>\n";
     if (r->divergence) h << "<pre>" << escape(r->divergence->context) << "</pre>\n";
   }
 }
@@ -457,7 +515,10 @@ void write_html_case(std::ostream& h, const ReportInput& in, std::size_t ci, con
   h << "; " << in.exps[ci].pulses.size() << " output pulses.</p>\n<table><tr><th>rate (pps)</th>";
   for (const auto& e : engines) h << "<th>" << escape(e) << "</th>";
   h << "<th>core latency (us)</th><th>cpu latency (us)</th></tr>\n";
-  for (double rate : in.rates) write_rate_row(h, in, c, rate, engines);
+  std::set<double> ran;  // only the rates the case ran at
+  for (const auto& r : in.rows)
+    if (r.case_name == c.name && r.ran()) ran.insert(r.rate_pps);
+  for (double rate : ran) write_rate_row(h, in, c, rate, engines);
   h << "</table>\n<p class=\"meta\">Latency: min / mean / max from a command pulse's rising edge to its output "
        "step pulse; * = pulses were lost, measured from the latest command pulse.</p>\n";
   std::vector<const Row*> diverged;
@@ -486,7 +547,7 @@ std::string report_html(const ReportInput& in, const std::string& verdict, const
   write_html_head(h, in, verdict, engines);
   h << how_to_read(in);
   write_html_limits(h, in, engines);
-  write_html_failures(h, in.rows);
+  write_html_failures(h, in.rows, in.opt);
   h << "<h2>Cases</h2>\n";
   for (std::size_t ci = 0; ci < in.cases.size(); ++ci) write_html_case(h, in, ci, engines);
   write_html_all_results(h, in.rows);

@@ -21,7 +21,17 @@ struct ReportInput {
   std::string command;
   double sim_seconds = 0, wall_seconds = 0;
   const Options& opt;
+  std::vector<std::string> traces = {};  // FST files written (--trace), linked from the page
 };
+
+// The command that re-runs one row on its own: `contour cosim --suite S
+// --case X --rate R --engines model,E` with the run's output timing, clock
+// and injected faults.
+std::string rerun_command(const Row& r, const Options& opt);
+
+// The report's JSON layout version (report.json "schema_version"): 2 adds
+// it, "not_run", "rerun", "case_start_us", first_mismatch_pps.
+inline constexpr int kReportSchemaVersion = 2;
 
 // "100.00% PASS 40 PASSED, 0 FAILED" (or "... FAIL ..."; ", 4 NOT RUN"
 // appended when some rows did not run; the percentage is of the rows that

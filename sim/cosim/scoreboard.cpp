@@ -54,6 +54,7 @@ Divergence make_divergence(const std::string& engine, const Expected& exp, const
   const std::optional<Pulse> ep = k < run.out.size() ? std::optional<Pulse>(run.out[k].pulse) : std::nullopt;
   d.summary = "pulse " + std::to_string(k + 1) + ": model " + side(mp) + ", " + engine + " " + side(ep);
   if (ep && !mp) d.summary += " (an extra pulse after the end)";
+  if (ep) d.t_us = run.out[k].t_us;
   // Positions of the engine, from its own pulses.
   std::vector<std::pair<std::int64_t, std::int64_t>> epos{{0, 0}};
   for (const auto& o : run.out) {
@@ -79,7 +80,7 @@ Divergence make_divergence(const std::string& engine, const Expected& exp, const
     if (has_e) {
       const auto& e = run.out[i];
       o << to_string(e.pulse) << "  at " << pos_text(epos[i + 1].first, epos[i + 1].second) << "  t = "
-        << fmt_us(e.t_us) << " us";
+        << fmt_us(e.t_us) << " us (SystemC " << fmt_us(run.t0_us + e.t_us) << " us)";
       if (!e.state.empty()) o << "  " << e.state;
     } else {
       o << "(no pulse)";
@@ -101,6 +102,7 @@ Row row_of(const Case& c, const Expected& exp, double rate_pps, std::size_t comm
   r.expected = exp.pulses.size();
   r.pulses = run.out.size();
   r.required = loss_forbidden(run.engine, rate_pps, core_carry_pps);
+  r.case_start_us = run.t0_us;
   return r;
 }
 

@@ -31,6 +31,7 @@ struct EngineRun {
   bool position_known = false;  // the engine reports its own position at the end
   std::int64_t x = 0, y = 0;    // absolute, on the case's path
   std::string error;            // a simulation error (bus fault, timeout, ...)
+  double t0_us = 0;             // SystemC time at which the case started (the pulses' t_us count from it)
 };
 
 // The golden model's answer for a case: every pulse, the state after it and
@@ -47,6 +48,7 @@ struct Divergence {
   std::uint64_t index = 0;  // 1-based output pulse number
   std::string summary;      // one line: "pulse 3: model +X, core +Y"
   std::string context;      // a window of pulses on both sides, one per line
+  double t_us = -1;         // the engine's diverging pulse, since the case started (-1: it gave none)
 };
 
 // PASS: the model's pulses, nothing lost. FLAGGED: the model's pulses, and
@@ -81,7 +83,7 @@ struct Row {
   // not a failure. The verdict line counts these rows as PASSED.
   bool acceptable() const { return verdict == Verdict::Pass || verdict == Verdict::Flagged; }
   bool ran() const { return verdict != Verdict::NotRun; }
-  double case_start_us = 0;     // SystemC time at which the case's train started
+  double case_start_us = 0;     // SystemC time at which the case started (EngineRun::t0_us)
   double wall_seconds = 0;      // wall time of the case's simulation, shared among its engines
 };
 

@@ -127,8 +127,8 @@ class Top : public sc_core::sc_module {
           }
           if (errors.count(s)) run.error = errors[s] + (run.error.empty() ? "" : "; " + run.error);
           run.out = s->rec.out;
+          run.t0_us = t0.to_seconds() * 1e6;
           rows.push_back(judge(c, exp, rate, cmd_us, run, carry_));
-          rows.back().case_start_us = t0.to_seconds() * 1e6;
           progress(++done, total, c.name + " " + run.engine + " @ " + rate_label(rate) + " pps");
         }
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
@@ -239,6 +239,7 @@ CosimOutcome run_cosim(const Options& opt) {
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   if (!opt.report_dir.empty()) {
     ReportInput in{s.name, cases, exps, rates, out.rows, opt.command_line, out.sim_seconds, out.wall_seconds, opt};
+    in.traces = out.files;  // only the traces so far
     for (const auto& f : write_reports(opt.report_dir, in)) out.files.push_back(f);
   }
   return out;
