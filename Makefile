@@ -9,6 +9,7 @@
 #   make formal  the formal proofs and their mutants (ctest -L formal)
 #   make mutants planted bugs in model, RTL, 8085 program: each must be KILLED
 #   make coverage line and toggle coverage of the interp_core regression
+#   make docs-plots  regenerate every plot committed under docs/
 #   make deps    install what is missing (apt-get, npm ci); run by the above
 #   make clean   remove build/
 #
@@ -26,7 +27,7 @@ COV_FILTER ?= *
 all: build
 
 help:
-	@sed -n '3,16p' Makefile
+	@sed -n '3,17p' Makefile
 
 deps:
 	@.ci/install-deps
@@ -91,3 +92,11 @@ clean:
 coverage: configure
 	@$(CMAKE) --build $(BUILD) -j$(JOBS) --target interp_rtl_cov
 	@tb/interp/coverage.sh $(BUILD) '$(COV_FILTER)'
+
+# Every plot committed under docs/, by the commands the docs give
+# (model/plot/docs_plots.sh); the ctest docs_plots_reproducible fails when
+# the committed files differ from what this makes.
+.PHONY: docs-plots
+docs-plots: configure
+	@$(CMAKE) --build $(BUILD) -j$(JOBS) --target contour
+	@model/plot/docs_plots.sh $(BUILD)/contour $(CURDIR)

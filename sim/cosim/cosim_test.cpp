@@ -173,6 +173,18 @@ TEST(Scoreboard, AMismatchIsNotALoss) {
   EXPECT_EQ(l.agree_up_to, 0.0);
 }
 
+// The report draws a case in its first move's frame: Fig. 5 from (6, 0) to
+// (0, 6) as in paper A (it once started at (0, 0) and ended at (-6, 6)).
+TEST(Report, PathsAreDrawnInTheMovesOwnFrame) {
+  const auto p5 = drawn_pulse_path(fig5(), expect(fig5()));
+  ASSERT_EQ(p5.size(), 13u);
+  EXPECT_EQ(p5.front(), (std::pair<double, double>{6, 0}));
+  EXPECT_EQ(p5.back(), (std::pair<double, double>{0, 6}));
+  const auto p2 = drawn_pulse_path(fig2(), expect(fig2()));
+  EXPECT_EQ(p2.front(), (std::pair<double, double>{0, 0}));
+  EXPECT_EQ(p2.back(), (std::pair<double, double>{6, 5}));
+}
+
 TEST(Scoreboard, WrongFinalPositionFails) {
   auto run = run_of("core", pulses(kFig2), 0);
   run.position_known = true;
@@ -444,6 +456,8 @@ TEST(CosimRun, ReportShowsWhatRanAndHowToReRunAFailure) {
                       "model,iss --inject iss:flip:2</code>"),
             std::string::npos);
   EXPECT_NE(html.find("the first divergence came at "), std::string::npos);
+  EXPECT_NE(html.find(">command rate (kpps)</text>"), std::string::npos);  // as the tables
+  EXPECT_EQ(html.find("e+06"), std::string::npos);
   EXPECT_EQ(html.find("<tr><td>250k</td>"), std::string::npos);  // no row for a rate that did not run
   EXPECT_NE(html.find("<td class=\"NOTRUN\""), std::string::npos);
   const std::string json = read_text(o.report_dir + "/report.json");

@@ -58,7 +58,17 @@ std::string json_str(const std::string& s) {
 
 std::string xml_attr(const std::string& s) { return escape(s); }
 
-// The ideal contour of a case as a polyline (arcs sampled).
+// The frame the path plots use: the first move's own (a line from its
+// start, an arc from its centre, as docs/algorithm.md and paper A draw
+// them: Fig. 5 from (6, 0) to (0, 6)); place() counts from the case's start.
+plot::Point move_frame_shift(const Case& c) {
+  const auto placed = place(c.moves);
+  if (placed.empty()) return {0, 0};
+  return {-double(placed.front().origin_x), -double(placed.front().origin_y)};
+}
+
+// The ideal contour of a case as a polyline (arcs sampled), on the case's
+// path (its start at (0, 0)).
 std::vector<plot::Point> ideal_path(const Case& c) {
   std::vector<plot::Point> pts;
   for (const auto& p : place(c.moves)) {
@@ -94,22 +104,29 @@ std::vector<plot::Point> pulse_path(const std::vector<Pulse>& pulses) {
   return pts;
 }
 
+// `pts` moved by `d`.
+std::vector<plot::Point> shifted(std::vector<plot::Point> pts, plot::Point d) {
+  for (auto& p : pts) p = {p.x + d.x, p.y + d.y};
+  return pts;
+}
+
 std::string path_svg(const Case& c, const Expected& e, const std::vector<const Row*>& diverged) {
+  const plot::Point d = move_frame_shift(c);
   plot::Plot pl;
   pl.title = c.name + ": output pulses over the ideal contour";
-  pl.x_label = "X (pulses)";
-  pl.y_label = "Y (pulses)";
+  pl.x_label = c.moves.front().is_arc() ? "X from the first arc's centre (pulses)" : "X from the start (pulses)";
+  pl.y_label = c.moves.front().is_arc() ? "Y from the first arc's centre (pulses)" : "Y from the start (pulses)";
   pl.equal_aspect = true;
   pl.width = 520;
   pl.height = 440;
-  pl.series.push_back({"ideal contour", "#999999", ideal_path(c), 2.0, true, false});
-  pl.series.push_back({"model pulses (= every agreeing engine)", "#1f77b4", pulse_path(e.pulses), 1.5, false,
-                       e.pulses.size() <= 200});
+  pl.series.push_back({"ideal contour", "#999999", shifted(ideal_path(c), d), 2.0, true, false});
+  pl.series.push_back({"model (= agreeing engines)", "#1f77b4", shifted(pulse_path(e.pulses), d), 1.5,
+                       false, e.pulses.size() <= 200});
   std::set<std::string> shown;
   for (const Row* r : diverged) {
     if (!shown.insert(r->engine).second) continue;
-    pl.series.push_back({r->engine + " @ " + rate_label(r->rate_pps) + " (diverged)", "#d62728", pulse_path(r->path),
-                         1.5, false, r->path.size() <= 200});
+    pl.series.push_back({r->engine + " @ " + rate_label(r->rate_pps) + " (diverged)", "#d62728",
+                         shifted(pulse_path(r->path), d), 1.5, false, r->path.size() <= 200});
   }
   return plot::render(pl);
 }
@@ -138,7 +155,7 @@ std::string deviation_svg(const Case& c, const Expected& e) {
 std::string lost_svg(const std::string& case_name, const std::vector<Row>& rows) {
   plot::Plot pl;
   pl.title = case_name + ": command pulses lost vs command rate";
-  pl.x_label = "command rate (pulses/s)";
+  pl.x_label = "command rate (kpps)";
   pl.y_label = "lost (% of command pulses)";
   pl.log_x = true;
   pl.width = 520;
@@ -147,7 +164,7 @@ std::string lost_svg(const std::string& case_name, const std::vector<Row>& rows)
     plot::Series s{e, engine_colors().at(e), {}, 2.0, e == "iss", true};
     for (const auto& r : rows)
       if (r.case_name == case_name && r.engine == e && r.commands > 0)
-        s.points.push_back({r.rate_pps, 100.0 * double(r.lost) / double(r.commands)});
+        s.points.push_back({r.rate_pps / 1e3, 100.0 * double(r.lost) / double(r.commands)});
     if (!s.points.empty()) pl.series.push_back(s);
   }
   return plot::render(pl);
@@ -157,10 +174,10 @@ std::string lost_svg(const std::string& case_name, const std::vector<Row>& rows)
 std::string lost_all_svg(const std::vector<Row>& rows) {
   plot::Plot pl;
   pl.title = "All cases: command pulses lost vs command rate";
-  pl.x_label = "command rate (pulses/s)";
+  pl.x_label = "command rate (kpps)";
   pl.y_label = "lost (% of all command pulses)";
   pl.log_x = true;
-  pl.width = 1060;
+  pl.width = 800;
   pl.height = 420;
   // Only the rates every case ran at (cases of several suites have their
   // own sweeps), so that each point sums the same cases.
@@ -178,7 +195,7 @@ std::string lost_all_svg(const std::vector<Row>& rows) {
         at[r.rate_pps].second += r.commands;
       }
     plot::Series s{e, engine_colors().at(e), {}, 2.5, e == "iss", true};
-    for (const auto& [rate, lc] : at) s.points.push_back({rate, 100.0 * double(lc.first) / double(lc.second)});
+    for (const auto& [rate, lc] : at) s.points.push_back({rate / 1e3, 100.0 * double(lc.first) / double(lc.second)});
     if (!s.points.empty()) pl.series.push_back(s);
   }
   return plot::render(pl);
@@ -580,6 +597,12 @@ void write_file(const std::string& dir, const std::string& name, const std::stri
 }
 
 }  // namespace
+
+std::vector<std::pair<double, double>> drawn_pulse_path(const Case& c, const Expected& e) {
+  std::vector<std::pair<double, double>> out;
+  for (const auto& p : shifted(pulse_path(e.pulses), move_frame_shift(c))) out.push_back({p.x, p.y});
+  return out;
+}
 
 std::vector<std::string> write_reports(const std::string& dir, const ReportInput& in) {
   std::vector<std::string> written;

@@ -48,6 +48,11 @@ struct Limit {
 };
 Limit limit_of(const std::vector<Row>& rows, const std::string& case_name, const std::string& engine);
 
+// The model's pulse path of a case as the report draws it: in the first
+// move's own frame (a line from its start, an arc from its centre), so that
+// paper A's Fig. 5 runs from (6, 0) to (0, 6).
+std::vector<std::pair<double, double>> drawn_pulse_path(const Case& c, const Expected& e);
+
 // Writes DIR/report.html, DIR/report.json and DIR/junit.xml; returns the paths.
 std::vector<std::string> write_reports(const std::string& dir, const ReportInput& in);
 
