@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "cases.hpp"
+#include "coverage.hpp"
 #include "options.hpp"
 #include "report.hpp"
 #include "scoreboard.hpp"
@@ -183,6 +184,64 @@ TEST(Report, PathsAreDrawnInTheMovesOwnFrame) {
   const auto p2 = drawn_pulse_path(fig2(), expect(fig2()));
   EXPECT_EQ(p2.front(), (std::pair<double, double>{0, 0}));
   EXPECT_EQ(p2.back(), (std::pair<double, double>{6, 5}));
+}
+
+// Coverage from an engine's pulses, checked against paper A's Fig. 5
+// (-X +Y +Y +Y +Y -X +Y -X +Y -X -X -X, D before the pulses 0, -11, -10,
+// -7, -2, 5, -4, 5, -2, 9, 4, 1): all in Q1 CCW, 6 inward (-X) and 6
+// outward, one D = 0 tie (the first pulse), no end-point rule, one
+// crossing, landing on the end (0, 6).
+TEST(Coverage, PaperFig5HitsItsBins) {
+  Coverage cov;
+  const auto exp = expect(fig5());
+  const auto run = run_of("cpu", pulses(kFig5), 0);
+  cov.add(fig5(), exp, run, judge(fig5(), exp, 1e3, commands(12), run));
+  const auto& b = cov.bins();
+  auto hits = [&](std::size_t i) { return b[i].total(); };
+  EXPECT_EQ(hits(bin::kArcDir + 0 * 4 + 0 * 2 + 0), 6u);  // Q1 CCW inward
+  EXPECT_EQ(hits(bin::kArcDir + 0 * 4 + 0 * 2 + 1), 6u);  // Q1 CCW outward
+  EXPECT_EQ(hits(bin::kArcTie), 1u);
+  EXPECT_EQ(hits(bin::kArcEndOut) + hits(bin::kArcEndIn), 0u);
+  EXPECT_EQ(hits(bin::kArcK + 1), 1u);
+  EXPECT_EQ(hits(bin::kArcCrossOntoEnd), 1u);
+  EXPECT_EQ(cov.hit(), 5u);
+  EXPECT_EQ(b[bin::kArcTie].hits.at("cpu"), 1u);
+  // A failed run counts nothing.
+  Coverage none;
+  auto bad = pulses(kFig5);
+  std::swap(bad[0], bad[1]);
+  const auto bad_run = run_of("cpu", bad, 0);
+  none.add(fig5(), exp, bad_run, judge(fig5(), exp, 1e3, commands(12), bad_run));
+  EXPECT_EQ(none.hit(), 0u);
+  EXPECT_EQ(none.percent(), 0.0);
+}
+
+// The end-point rule, from the contract's own reasoning: on (10, 0) to
+// (8, 7) CCW the walk reaches x = 8 with D >= 0 and must go outward; on
+// (10, 0) to (3, 9) it reaches y = 9 with D < 0 and must go inward. Fig. 2
+// (a line) ties at D = 0 on its first pulse (X) and runs X+ Y+.
+TEST(Coverage, EndPointRulesAndLines) {
+  const Suite s = suite("smoke");
+  auto find_case = [&](const std::string& n) {
+    for (const auto& c : s.cases)
+      if (c.name == n) return c;
+    throw std::runtime_error(n);
+  };
+  Coverage cov;
+  for (const char* n : {"arc-k0", "arc-k0-y"}) {
+    const Case c = find_case(n);
+    const auto exp = expect(c);
+    const auto run = run_of("model", exp.pulses, 0);
+    cov.add(c, exp, run, judge(c, exp, 1e3, commands(exp.pulses.size()), run));
+  }
+  EXPECT_GE(cov.bins()[bin::kArcEndOut].total(), 1u);
+  EXPECT_GE(cov.bins()[bin::kArcEndIn].total(), 1u);
+  EXPECT_EQ(cov.bins()[bin::kArcK + 0].total(), 2u);
+  const auto exp2 = expect(fig2());
+  const auto run2 = run_of("core", pulses(kFig2), 0);
+  cov.add(fig2(), exp2, run2, judge(fig2(), exp2, 1e3, commands(11), run2));
+  EXPECT_EQ(cov.bins()[bin::kLineSigns + 0].total(), 1u);
+  EXPECT_GE(cov.bins()[bin::kLineTie].total(), 1u);
 }
 
 TEST(Scoreboard, WrongFinalPositionFails) {

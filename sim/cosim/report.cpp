@@ -250,6 +250,15 @@ std::string verdict_line(const std::vector<Row>& rows) {
          (t.not_run ? ", " + std::to_string(t.not_run) + " NOT RUN" : "");
 }
 
+std::string coverage_line(const Coverage& c) {
+  std::string s = "functional coverage: " + std::to_string(c.hit()) + " of " + std::to_string(c.bins().size()) +
+                  " bins (" + fmt("%.2f%%", c.percent()) + ")";
+  std::string missed;
+  for (const auto& b : c.bins())
+    if (b.total() == 0) missed += (missed.empty() ? "" : "; ") + b.group + ": " + b.name;
+  return missed.empty() ? s : s + "; not reached: " + missed;
+}
+
 std::string rerun_command(const Row& r, const Options& opt) {
   std::string suite_name;
   for (const auto& n : suite_names()) {
@@ -328,6 +337,25 @@ void write_json_limits(std::ostream& j, const ReportInput& in, const std::vector
     }
 }
 
+// "coverage": {"bins", "hit", "percent", "items": [{"group", "name",
+// "total", "hits": {engine: n}}...]}
+void write_json_coverage(std::ostream& j, const Coverage& c) {
+  j << ",\n  \"coverage\": {\"bins\": " << c.bins().size() << ", \"hit\": " << c.hit()
+    << ", \"percent\": " << fmt("%.2f", c.percent()) << ", \"items\": [\n";
+  for (std::size_t i = 0; i < c.bins().size(); ++i) {
+    const auto& b = c.bins()[i];
+    j << "    {\"group\": " << json_str(b.group) << ", \"name\": " << json_str(b.name) << ", \"total\": " << b.total()
+      << ", \"hits\": {";
+    bool first = true;
+    for (const auto& [e, n] : b.hits) {
+      j << (first ? "" : ", ") << json_str(e) << ": " << n;
+      first = false;
+    }
+    j << "}}" << (i + 1 < c.bins().size() ? "," : "") << "\n";
+  }
+  j << "  ]}";
+}
+
 std::string report_json(const ReportInput& in, const std::string& verdict, const std::vector<std::string>& engines) {
   std::ostringstream j;
   const Tally t = tally(in.rows);
@@ -341,7 +369,9 @@ std::string report_json(const ReportInput& in, const std::string& verdict, const
   }
   j << "  ],\n  \"limits\": [\n";
   write_json_limits(j, in, engines);
-  j << "\n  ]\n}\n";
+  j << "\n  ]";
+  if (in.coverage) write_json_coverage(j, *in.coverage);
+  j << "\n}\n";
   return j.str();
 }
 
@@ -471,6 +501,29 @@ void write_html_limits(std::ostream& h, const ReportInput& in, const std::vector
   h << "</div>\n";
 }
 
+// The contract's bins, hits per engine, unreached bins in red.
+void write_html_coverage(std::ostream& h, const Coverage& c, const std::vector<std::string>& engines) {
+  h << "<h2 id=\"coverage\">Functional coverage of the contract: " << c.hit() << " of " << c.bins().size()
+    << " bins (" << fmt("%.2f%%", c.percent()) << ")</h2>\n<p class=\"meta\">Each bin counts what the engines "
+       "did, not what the cases ask for: every passed run's own output pulses are replayed in the move's frame "
+       "against docs/algorithm.md (quadrant table Q, D, the tie and end-point rules, crossings), plus what its host "
+       "side saw (queue full, a refused PUSH, ABORT). Failed runs count nothing. The ABORT bin is an abort of a "
+       "loaded move before its first step and of a queued one, before every core case; an abort in the middle of "
+       "the steps is tested by tb/interp (InterpTop.AbortInTheMiddleThenANewMove), not here.</p>\n"
+       "<table><tr><th class=\"l\">group</th><th class=\"l\">bin</th>";
+  for (const auto& e : engines) h << "<th>" << escape(e) << "</th>";
+  h << "<th>total</th></tr>\n";
+  for (const auto& b : c.bins()) {
+    h << "<tr><td class=\"l\">" << escape(b.group) << "</td><td class=\"l\">" << escape(b.name) << "</td>";
+    for (const auto& e : engines) {
+      const auto it = b.hits.find(e);
+      h << "<td>" << (it == b.hits.end() ? 0 : it->second) << "</td>";
+    }
+    h << "<td class=\"" << (b.total() ? "PASS" : "FAIL") << "\">" << b.total() << "</td></tr>\n";
+  }
+  h << "</table>\n";
+}
+
 void write_html_failures(std::ostream& h, const std::vector<Row>& rows, const Options& opt) {
   std::vector<const Row*> failed;
   for (const auto& r : rows)
@@ -565,6 +618,7 @@ std::string report_html(const ReportInput& in, const std::string& verdict, const
   h << how_to_read(in);
   write_html_limits(h, in, engines);
   write_html_failures(h, in.rows, in.opt);
+  if (in.coverage) write_html_coverage(h, *in.coverage, engines);
   h << "<h2>Cases</h2>\n";
   for (std::size_t ci = 0; ci < in.cases.size(); ++ci) write_html_case(h, in, ci, engines);
   write_html_all_results(h, in.rows);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cases.hpp"
+#include "coverage.hpp"
 #include "scoreboard.hpp"
 
 namespace contour::cosim {
@@ -22,7 +23,11 @@ struct ReportInput {
   double sim_seconds = 0, wall_seconds = 0;
   const Options& opt;
   std::vector<std::string> traces = {};  // FST files written (--trace), linked from the page
+  const Coverage* coverage = nullptr;     // functional coverage (nullptr: none shown)
 };
+
+// "functional coverage: 36 of 36 bins (100.00%)" (and the bins missed).
+std::string coverage_line(const Coverage& c);
 
 // The command that re-runs one row on its own: `contour cosim --suite S
 // --case X --rate R --engines model,E` with the run's output timing, clock

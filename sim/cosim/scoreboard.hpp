@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,6 +33,11 @@ struct EngineRun {
   std::int64_t x = 0, y = 0;    // absolute, on the case's path
   std::string error;            // a simulation error (bus fault, timeout, ...)
   double t0_us = 0;             // SystemC time at which the case started (the pulses' t_us count from it)
+  // Functional-coverage hooks: what the engine's host side did, counted by
+  // the engine (coverage.hpp): "queue_full" (a move waited for room),
+  // "push_refused" (the core refused a PUSH into its full queue),
+  // "abort" (the core dropped a loaded and a queued move on ABORT).
+  std::map<std::string, std::uint64_t> events;
 };
 
 // The golden model's answer for a case: every pulse, the state after it and

@@ -60,6 +60,7 @@ class Top : public sc_core::sc_module {
 
   std::vector<std::unique_ptr<Slot>>& slots() { return slots_; }
   std::vector<Row> rows;
+  Coverage coverage;
 
  private:
   void progress(std::size_t done, std::size_t total, const std::string& what) {
@@ -95,6 +96,7 @@ class Top : public sc_core::sc_module {
         for (Slot* s : act) {
           if (s->fault) s->fault->reset();
           s->rec.start(sc_core::sc_time_stamp());
+          s->engine->events().clear();
           try {
             s->engine->begin_case(c);
           } catch (const std::exception& e) {
@@ -127,8 +129,10 @@ class Top : public sc_core::sc_module {
           }
           if (errors.count(s)) run.error = errors[s] + (run.error.empty() ? "" : "; " + run.error);
           run.out = s->rec.out;
+          run.events = s->engine->events();
           run.t0_us = t0.to_seconds() * 1e6;
           rows.push_back(judge(c, exp, rate, cmd_us, run, carry_));
+          coverage.add(c, exp, run, rows.back());
           progress(++done, total, c.name + " " + run.engine + " @ " + rate_label(rate) + " pps");
         }
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
@@ -229,6 +233,7 @@ CosimOutcome run_cosim(const Options& opt) {
     }
     out.sim_seconds = sc_core::sc_time_stamp().to_seconds();
     out.rows = std::move(top.rows);
+    out.coverage = std::move(top.coverage);
   }
   if (opt.engines.count("cpu")) std::filesystem::remove(rom);
   for (const auto& r : out.rows) {
@@ -240,6 +245,7 @@ CosimOutcome run_cosim(const Options& opt) {
   if (!opt.report_dir.empty()) {
     ReportInput in{s.name, cases, exps, rates, out.rows, opt.command_line, out.sim_seconds, out.wall_seconds, opt};
     in.traces = out.files;  // only the traces so far
+    in.coverage = &out.coverage;
     for (const auto& f : write_reports(opt.report_dir, in)) out.files.push_back(f);
   }
   return out;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cases.hpp"
+#include "coverage.hpp"
 #include "engines.hpp"
 #include "scoreboard.hpp"
 
@@ -34,6 +35,7 @@ struct Options {
 // engine above its max_rate), which are neither.
 struct CosimOutcome {
   std::vector<Row> rows;
+  Coverage coverage;                   // functional coverage of the contract (coverage.hpp)
   std::size_t passed = 0, failed = 0, not_run = 0;
   double sim_seconds = 0, wall_seconds = 0;
   std::uint64_t core_clocks = 0;
