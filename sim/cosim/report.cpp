@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -250,6 +251,25 @@ std::string verdict_line(const std::vector<Row>& rows) {
          (t.not_run ? ", " + std::to_string(t.not_run) + " NOT RUN" : "");
 }
 
+std::optional<RtlCoverage> read_rtl_coverage(const std::string& dat_path) {
+  std::ifstream f(dat_path);
+  if (!f) return std::nullopt;
+  RtlCoverage c;
+  c.path = dat_path;
+  for (std::string line; std::getline(f, line);) {
+    if (line.rfind("C '", 0) != 0) continue;
+    const auto page = line.find("page\002");
+    const auto close = line.rfind("' ");
+    if (page == std::string::npos || close == std::string::npos) continue;
+    const bool toggle = line.compare(page + 5, 8, "v_toggle") == 0;
+    const bool hit = std::strtoull(line.c_str() + close + 2, nullptr, 10) > 0;
+    (toggle ? c.toggles : c.lines) += 1;
+    (toggle ? c.toggles_hit : c.lines_hit) += hit;
+  }
+  if (c.lines + c.toggles == 0) return std::nullopt;
+  return c;
+}
+
 std::string coverage_line(const Coverage& c) {
   std::string s = "functional coverage: " + std::to_string(c.hit()) + " of " + std::to_string(c.bins().size()) +
                   " bins (" + fmt("%.2f%%", c.percent()) + ")";
@@ -371,6 +391,11 @@ std::string report_json(const ReportInput& in, const std::string& verdict, const
   write_json_limits(j, in, engines);
   j << "\n  ]";
   if (in.coverage) write_json_coverage(j, *in.coverage);
+  if (in.rtl_coverage)
+    j << ",\n  \"rtl_coverage\": {\"path\": " << json_str(in.rtl_coverage->path)
+      << ", \"lines\": " << in.rtl_coverage->lines << ", \"lines_hit\": " << in.rtl_coverage->lines_hit
+      << ", \"toggles\": " << in.rtl_coverage->toggles << ", \"toggles_hit\": " << in.rtl_coverage->toggles_hit
+      << "}";
   j << "\n}\n";
   return j.str();
 }
@@ -524,6 +549,25 @@ void write_html_coverage(std::ostream& h, const Coverage& c, const std::vector<s
   h << "</table>\n";
 }
 
+// The core's line and toggle coverage, when `make coverage` was run.
+void write_html_rtl_coverage(std::ostream& h, const std::optional<RtlCoverage>& c) {
+  h << "<h3>Line and toggle coverage of the core (<code>make coverage</code>)</h3>\n<p class=\"meta\">";
+  if (!c) {
+    h << "Not run: <code>make coverage</code> writes <code>build/coverage/merged.dat</code> (the interp_core "
+         "regression of tb/interp; docs/rtl.md, Coverage), which this report then shows.</p>\n";
+    return;
+  }
+  auto pct = [](std::uint64_t hit, std::uint64_t all) {
+    return all ? fmt("%.1f%%", 100.0 * double(hit) / double(all)) + " (" + std::to_string(hit) + "/" +
+                     std::to_string(all) + ")"
+               : std::string("-");
+  };
+  h << "Lines (v_line + v_branch): <b>" << pct(c->lines_hit, c->lines) << "</b>; toggles: <b>"
+    << pct(c->toggles_hit, c->toggles) << "</b>. From <code>" << escape(c->path)
+    << "</code> (the interp_core regression of tb/interp, W = 8 and W = 24; the points never hit are listed in "
+       "uncovered.txt beside it, their causes in docs/rtl.md).</p>\n";
+}
+
 void write_html_failures(std::ostream& h, const std::vector<Row>& rows, const Options& opt) {
   std::vector<const Row*> failed;
   for (const auto& r : rows)
@@ -619,6 +663,7 @@ std::string report_html(const ReportInput& in, const std::string& verdict, const
   write_html_limits(h, in, engines);
   write_html_failures(h, in.rows, in.opt);
   if (in.coverage) write_html_coverage(h, *in.coverage, engines);
+  if (in.coverage) write_html_rtl_coverage(h, in.rtl_coverage);
   h << "<h2>Cases</h2>\n";
   for (std::size_t ci = 0; ci < in.cases.size(); ++ci) write_html_case(h, in, ci, engines);
   write_html_all_results(h, in.rows);

@@ -2,6 +2,8 @@
 // first divergences, inline SVG plots), report.json and junit.xml.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +14,16 @@
 namespace contour::cosim {
 
 struct Options;
+
+// Line and toggle coverage of the core's regression from `make coverage`
+// (tb/interp/coverage.sh): the points of a verilator_coverage .dat file.
+struct RtlCoverage {
+  std::string path;                 // the .dat read
+  std::uint64_t lines = 0, lines_hit = 0, toggles = 0, toggles_hit = 0;
+};
+// Reads a merged .dat (points "C '...page\002v_line/...' count"); nothing
+// when the file is missing or has no points.
+std::optional<RtlCoverage> read_rtl_coverage(const std::string& dat_path);
 
 struct ReportInput {
   std::string suite;
@@ -24,6 +36,7 @@ struct ReportInput {
   const Options& opt;
   std::vector<std::string> traces = {};  // FST files written (--trace), linked from the page
   const Coverage* coverage = nullptr;     // functional coverage (nullptr: none shown)
+  std::optional<RtlCoverage> rtl_coverage = {};  // from `make coverage`, when it was run
 };
 
 // "functional coverage: 36 of 36 bins (100.00%)" (and the bins missed).

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -156,6 +157,15 @@ class Top : public sc_core::sc_module {
 
 bool g_ran = false;
 
+// `make coverage`'s merged counts: $CONTOUR_RTL_COVERAGE, else
+// coverage/merged.dat next to this program (build/).
+std::string rtl_coverage_path() {
+  if (const char* env = std::getenv("CONTOUR_RTL_COVERAGE"); env && *env) return env;
+  std::error_code ec;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string() : (self.parent_path() / "coverage" / "merged.dat").string();
+}
+
 // Every rate within 1 .. kMaxRate, and none above what a chosen engine's
 // input can carry (the core's pin); the 8085 engines' rows say NOT RUN.
 void check_rates(const std::vector<double>& rates, const Options& opt) {
@@ -246,6 +256,7 @@ CosimOutcome run_cosim(const Options& opt) {
     ReportInput in{s.name, cases, exps, rates, out.rows, opt.command_line, out.sim_seconds, out.wall_seconds, opt};
     in.traces = out.files;  // only the traces so far
     in.coverage = &out.coverage;
+    in.rtl_coverage = read_rtl_coverage(rtl_coverage_path());
     for (const auto& f : write_reports(opt.report_dir, in)) out.files.push_back(f);
   }
   return out;
