@@ -244,6 +244,27 @@ TEST(Coverage, EndPointRulesAndLines) {
   EXPECT_GE(cov.bins()[bin::kLineTie].total(), 1u);
 }
 
+// The verilator_coverage points the report counts: v_line and v_branch as
+// lines, v_toggle as toggles, a count of 0 as not hit.
+TEST(Report, ReadsTheCoresLineAndToggleCoverage) {
+  const std::string path = ::testing::TempDir() + "/contour-cov-" + std::to_string(::getpid()) + ".dat";
+  {
+    std::ofstream f(path);
+    f << "# SystemC::Coverage-3\n"
+      << "C '\001f\002a.v\001l\0021\001page\002v_line/m__W8\001o\002block' 38\n"
+      << "C '\001f\002a.v\001l\0022\001page\002v_branch/m__W8\001o\002if' 0\n"
+      << "C '\001f\002a.v\001l\0023\001page\002v_toggle/m__W8\001o\002q[0]' 5\n";
+  }
+  const auto c = read_rtl_coverage(path);
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->lines, 2u);
+  EXPECT_EQ(c->lines_hit, 1u);
+  EXPECT_EQ(c->toggles, 1u);
+  EXPECT_EQ(c->toggles_hit, 1u);
+  std::filesystem::remove(path);
+  EXPECT_FALSE(read_rtl_coverage(path));
+}
+
 TEST(Scoreboard, WrongFinalPositionFails) {
   auto run = run_of("core", pulses(kFig2), 0);
   run.position_known = true;
