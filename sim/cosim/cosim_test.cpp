@@ -261,6 +261,7 @@ TEST(Report, ReadsTheCoresLineAndToggleCoverage) {
   EXPECT_EQ(c->lines_hit, 1u);
   EXPECT_EQ(c->toggles, 1u);
   EXPECT_EQ(c->toggles_hit, 1u);
+  EXPECT_EQ(c->uncovered, (std::vector<std::string>{"v_branch/m__W8 a.v:2 if"}));
   std::filesystem::remove(path);
   EXPECT_FALSE(read_rtl_coverage(path));
 }

@@ -251,6 +251,26 @@ std::string verdict_line(const std::vector<Row>& rows) {
          (t.not_run ? ", " + std::to_string(t.not_run) + " NOT RUN" : "");
 }
 
+namespace {
+
+// One point of a .dat line ("C '\001f\002FILE\001l\002LINE...\001page\002PAGE\001o\002WHAT..."):
+// "PAGE FILE:LINE WHAT", the file without its directory.
+std::string coverage_point_text(const std::string& point) {
+  std::map<std::string, std::string> kv;
+  std::size_t at = 0;
+  while ((at = point.find('\001', at)) != std::string::npos) {
+    const auto sep = point.find('\002', at);
+    const auto next = point.find('\001', at + 1);
+    if (sep == std::string::npos || sep > next) break;
+    kv[point.substr(at + 1, sep - at - 1)] = point.substr(sep + 1, next == std::string::npos ? std::string::npos : next - sep - 1);
+    at = sep;
+  }
+  const std::string file = kv["f"].substr(kv["f"].rfind('/') + 1);
+  return kv["page"] + " " + file + ":" + kv["l"] + " " + kv["o"];
+}
+
+}  // namespace
+
 std::optional<RtlCoverage> read_rtl_coverage(const std::string& dat_path) {
   std::ifstream f(dat_path);
   if (!f) return std::nullopt;
@@ -265,6 +285,7 @@ std::optional<RtlCoverage> read_rtl_coverage(const std::string& dat_path) {
     const bool hit = std::strtoull(line.c_str() + close + 2, nullptr, 10) > 0;
     (toggle ? c.toggles : c.lines) += 1;
     (toggle ? c.toggles_hit : c.lines_hit) += hit;
+    if (!hit) c.uncovered.push_back(coverage_point_text(line.substr(0, close)));
   }
   if (c.lines + c.toggles == 0) return std::nullopt;
   return c;
@@ -564,8 +585,12 @@ void write_html_rtl_coverage(std::ostream& h, const std::optional<RtlCoverage>& 
   };
   h << "Lines (v_line + v_branch): <b>" << pct(c->lines_hit, c->lines) << "</b>; toggles: <b>"
     << pct(c->toggles_hit, c->toggles) << "</b>. From <code>" << escape(c->path)
-    << "</code> (the interp_core regression of tb/interp, W = 8 and W = 24; the points never hit are listed in "
-       "uncovered.txt beside it, their causes in docs/rtl.md).</p>\n";
+    << "</code> (the interp_core regression of tb/interp, W = 8 and W = 24; the causes of the points never hit "
+       "are in docs/rtl.md, Coverage).</p>\n";
+  if (c->uncovered.empty()) return;
+  h << "<details><summary>" << c->uncovered.size() << " point(s) never hit (page, source line, signal)</summary><pre>";
+  for (const auto& u : c->uncovered) h << escape(u) << "\n";
+  h << "</pre></details>\n";
 }
 
 void write_html_failures(std::ostream& h, const std::vector<Row>& rows, const Options& opt) {

@@ -20,6 +20,7 @@ struct Options;
 struct RtlCoverage {
   std::string path;                 // the .dat read
   std::uint64_t lines = 0, lines_hit = 0, toggles = 0, toggles_hit = 0;
+  std::vector<std::string> uncovered;  // "v_toggle/interp_dp__W8 interp_dp.v:57 d_q[25]", per point never hit
 };
 // Reads a merged .dat (points "C '...page\002v_line/...' count"); nothing
 // when the file is missing or has no points.
