@@ -163,6 +163,12 @@ std::vector<Placed> place(const std::vector<Move>& moves) {
   return out;
 }
 
+std::string rate_label_approx(double r) {
+  if (r <= 0) return rate_label(r);
+  const double unit = std::pow(10.0, std::floor(std::log10(r)) - 3);
+  return rate_label(std::round(r / unit) * unit);
+}
+
 std::string rate_label(double r) {
   char buf[32];
   if (r >= 1e6) std::snprintf(buf, sizeof buf, "%gM", r / 1e6);

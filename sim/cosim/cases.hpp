@@ -77,5 +77,7 @@ std::vector<Placed> place(const std::vector<Move>& moves);
 
 // "250k", "1M", "3.5k": rates as the report and the CLI print them.
 std::string rate_label(double rate_pps);
+// A computed rate to 4 significant digits: "416.7k", "381.4".
+std::string rate_label_approx(double rate_pps);
 
 }  // namespace contour::cosim

@@ -27,6 +27,13 @@ const std::map<std::string, std::string>& engine_colors() {
   return c;
 }
 
+// The lost-pulse curves: cpu before iss, so that the dashed iss curve shows
+// on top where the two are equal (the same program, T-state exact).
+const std::vector<std::string>& plot_order() {
+  static const std::vector<std::string> order = {"model", "core", "cpu", "iss"};
+  return order;
+}
+
 std::string engine_title(const std::string& e) {
   if (e == "model") return "model (golden C++ in an SC_MODULE)";
   if (e == "core") return "core (Verilog core interp_top, Verilated --sc)";
@@ -161,7 +168,7 @@ std::string lost_svg(const std::string& case_name, const std::vector<Row>& rows)
   pl.log_x = true;
   pl.width = 520;
   pl.height = 380;
-  for (const auto& e : engine_names()) {
+  for (const auto& e : plot_order()) {
     plot::Series s{e, engine_colors().at(e), {}, 2.0, e == "iss", true};
     for (const auto& r : rows)
       if (r.case_name == case_name && r.engine == e && r.commands > 0)
@@ -188,7 +195,7 @@ std::string lost_all_svg(const std::vector<Row>& rows) {
     cases_at[r.rate_pps].insert(r.case_name);
     all_cases.insert(r.case_name);
   }
-  for (const auto& e : engine_names()) {
+  for (const auto& e : plot_order()) {
     std::map<double, std::pair<std::uint64_t, std::uint64_t>> at;  // rate -> (lost, commands)
     for (const auto& r : rows)
       if (r.engine == e && r.commands > 0 && cases_at[r.rate_pps].size() == all_cases.size()) {
@@ -207,7 +214,7 @@ std::string css() {
 h1{font-size:26px;margin:0 0 6px 0;padding:10px 14px;border-radius:6px}
 h1.pass{background:#e3f4e3;color:#1a6b1a}h1.fail{background:#fbe3e3;color:#a01818}
 h2{margin-top:34px;border-bottom:1px solid #ccc;padding-bottom:4px}h3{margin-bottom:6px}
-table{border-collapse:collapse;margin:8px 0 16px 0;font-size:13px}
+table{border-collapse:collapse;margin:8px 0 16px 0;font-size:13px;display:block;overflow-x:auto;max-width:100%}
 th,td{border:1px solid #ccc;padding:3px 7px;text-align:right}th{background:#f2f2f2}
 td.l,th.l{text-align:left}
 td.PASS{background:#e3f4e3}td.NOTRUN{background:#eee;color:#777}
@@ -515,9 +522,9 @@ std::string how_to_read(const ReportInput& in) {
          "<b>PASS</b>: identical pulses, nothing lost. <b>FLAGGED</b>: the pulses given are the model's, and every "
          "lost command pulse was flagged (allowed above an engine's limit). <b>FAIL</b>: a pulse differs, a loss was "
          "not flagged, the final position is wrong, or an engine lost pulses where it must keep up (the core up to "
-         + rate_label(keep_up_rate("core", carry)) + " pps: paper A's " + rate_label(kCoreRequiredRate) +
+         + rate_label_approx(keep_up_rate("core", carry)) + " pps: paper A's " + rate_label(kCoreRequiredRate) +
          " pps or what its output stage carries at the programmed timing, " + fmt("%g", in.opt.core_hz / 1e6) +
-         " MHz / (STEP_LEN + STEP_SPACE + DIR_SETUP + DIR_HOLD) = " + rate_label(carry) +
+         " MHz / (STEP_LEN + STEP_SPACE + DIR_SETUP + DIR_HOLD) = " + rate_label_approx(carry) +
          " pps, whichever is lower; the 8085 up to " + rate_label(kRequiredRate8085) + " pps). <b>NOT RUN</b>: the "
          "engine cannot take the rate. Cells read <i>verdict lost/overruns</i>. In a divergence, <i>at (x, y)</i> is the position on the "
          "case's path (its start is (0, 0)); the states are in the move's own frame (a line from its start, an arc "
@@ -526,7 +533,9 @@ std::string how_to_read(const ReportInput& in) {
 
 // Where each engine falls behind: a table and the lost-pulse plots.
 void write_html_limits(std::ostream& h, const ReportInput& in, const std::vector<std::string>& engines) {
-  h << "<h2>Where each engine falls behind</h2>\n<table><tr><th class=\"l\">case</th>";
+  h << "<h2>Where each engine falls behind</h2>\n<p class=\"meta\">Rates in pulses/s: the highest rate up to "
+       "which the engine agreed at every rate, the lowest at which it lost command pulses, the lowest at which a "
+       "pulse differed from the model's.</p>\n<table><tr><th class=\"l\">case</th>";
   for (const auto& e : engines)
     h << "<th>" << escape(e) << ": agrees up to</th><th>first loss</th><th>first mismatch</th>";
   h << "</tr>\n";
@@ -534,9 +543,9 @@ void write_html_limits(std::ostream& h, const ReportInput& in, const std::vector
     h << "<tr><td class=\"l\">" << escape(c.name) << "</td>";
     for (const auto& e : engines) {
       const Limit l = limit_of(in.rows, c.name, e);
-      h << "<td>" << (l.agree_up_to > 0 ? rate_label(l.agree_up_to) + " pps" : "-") << "</td><td>"
-        << (l.first_loss > 0 ? rate_label(l.first_loss) + " pps" : "none") << "</td><td"
-        << (l.first_mismatch > 0 ? " class=\"FAIL\">" + rate_label(l.first_mismatch) + " pps" : ">none") << "</td>";
+      h << "<td>" << (l.agree_up_to > 0 ? rate_label(l.agree_up_to) : "-") << "</td><td>"
+        << (l.first_loss > 0 ? rate_label(l.first_loss) : "none") << "</td><td"
+        << (l.first_mismatch > 0 ? " class=\"FAIL\">" + rate_label(l.first_mismatch) : ">none") << "</td>";
     }
     h << "</tr>\n";
   }

@@ -147,7 +147,7 @@ void check_losses(const EngineRun& run, bool diverged, double keep_up_pps, Row& 
   }
   if (r.required && r.lost > 0)
     why.push_back(std::to_string(r.lost) + " pulses lost at " + rate_label(r.rate_pps) + " pps, where " +
-                  run.engine + " must keep up (up to " + rate_label(keep_up_pps) + " pps)");
+                  run.engine + " must keep up (up to " + rate_label_approx(keep_up_pps) + " pps)");
 }
 
 // Final position: the engine's own count against the model's after as many
