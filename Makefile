@@ -10,6 +10,7 @@
 #   make mutants planted bugs in model, RTL, 8085 program: each must be KILLED
 #   make coverage line and toggle coverage of the interp_core regression
 #   make install PREFIX=DIR  contour and contour-cosim into DIR/bin (default /usr/local)
+#   make docs-plots  regenerate every plot committed under docs/
 #   make deps    install what is missing (apt-get, npm ci); run by the above
 #   make clean   remove build/
 #
@@ -27,7 +28,7 @@ COV_FILTER ?= *
 all: build
 
 help:
-	@sed -n '3,17p' Makefile
+	@sed -n '3,18p' Makefile
 
 deps:
 	@.ci/install-deps
@@ -102,3 +103,11 @@ clean:
 coverage: configure
 	@$(CMAKE) --build $(BUILD) -j$(JOBS) --target interp_rtl_cov
 	@tb/interp/coverage.sh $(BUILD) '$(COV_FILTER)'
+
+# Every plot committed under docs/, by the commands the docs give
+# (model/plot/docs_plots.sh); the ctest docs_plots_reproducible fails when
+# the committed files differ from what this makes.
+.PHONY: docs-plots
+docs-plots: configure
+	@$(CMAKE) --build $(BUILD) -j$(JOBS) --target contour
+	@model/plot/docs_plots.sh $(BUILD)/contour $(CURDIR)

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -33,9 +34,12 @@ double nice_step(double span, int n) {
   return (f < 1.5 ? 1 : f < 3.5 ? 2 : f < 7.5 ? 5 : 10) * mag;
 }
 
+// Tick labels: integers as integers (no "1e+06"), others to 6 digits,
+// exponents only for the very large and the very small.
 std::string fmt(double v) {
   char buf[32];
-  if (v != 0 && (std::fabs(v) >= 1e6 || std::fabs(v) < 1e-3)) std::snprintf(buf, sizeof buf, "%.3g", v);
+  if (std::fabs(v) < 1e12 && v == std::round(v)) std::snprintf(buf, sizeof buf, "%.0f", v);
+  else if (v != 0 && (std::fabs(v) >= 1e12 || std::fabs(v) < 1e-3)) std::snprintf(buf, sizeof buf, "%.3g", v);
   else std::snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
 }
@@ -50,7 +54,13 @@ std::vector<Point> thin(const std::vector<Point>& pts, std::size_t limit) {
 }
 
 // Plot margins, px: room for the y tick labels, the title and the x label.
-constexpr double kLeft = 70, kRight = 20, kTop = 40, kBottom = 55;
+constexpr double kLeft = 76, kRight = 20, kTop = 40, kBottom = 58;
+// Text, px: readable when a plot is shown at its own size (or an 800 px
+// one at 800 px): ticks and legend 13, axis labels 14, title 16.
+constexpr int kFont = 13, kLabelFont = 14, kTitleFont = 16;
+// The legend's metrics: an average glyph of the 13 px sans-serif font,
+// one entry's height, the sample line and the padding.
+constexpr double kGlyph = 7.6, kEntry = 18, kSample = 30, kPad = 6;
 
 // The data ranges and their mapping to the drawing area.
 struct Frame {
@@ -67,10 +77,10 @@ struct Frame {
 
 // Ranges of the data with a margin of 5 % (so lines do not sit on the
 // frame), widened to equal scales when the plot asks for them.
-Frame fit_frame(const Plot& plot) {
+Frame fit_frame(const Plot& plot, double band) {
   Frame f;
   f.pw = plot.width - kLeft - kRight;
-  f.ph = plot.height - kTop - kBottom;
+  f.ph = plot.height - kTop - kBottom - band;
   f.log_x = plot.log_x;
   Range rx, ry;
   for (const auto& s : plot.series)
@@ -118,16 +128,16 @@ std::string clip_id(const Plot& plot, const Frame& f) {
 void write_header(std::ostream& o, const Plot& plot) {
   o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << plot.width << "\" height=\"" << plot.height
     << "\" viewBox=\"0 0 " << plot.width << ' ' << plot.height
-    << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+    << "\" font-family=\"sans-serif\" font-size=\"" << kFont << "\">\n"
     << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-    << "<text x=\"" << plot.width / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
+    << "<text x=\"" << plot.width / 2 << "\" y=\"24\" text-anchor=\"middle\" font-size=\"" << kTitleFont << "\">"
     << escape(plot.title) << "</text>\n";
 }
 
 // A vertical grid line at px, to `o`, and its label, to `labels`.
 void write_x_tick(std::ostream& o, std::ostream& labels, const Frame& f, double px, const std::string& label) {
   o << "<line x1=\"" << px << "\" y1=\"" << f.top << "\" x2=\"" << px << "\" y2=\"" << f.top + f.ph << "\"/>\n";
-  labels << "<text x=\"" << px << "\" y=\"" << f.top + f.ph + 16 << "\" text-anchor=\"middle\">" << label
+  labels << "<text x=\"" << px << "\" y=\"" << f.top + f.ph + 18 << "\" text-anchor=\"middle\">" << label
          << "</text>\n";
 }
 
@@ -159,10 +169,10 @@ void write_grid(std::ostream& o, const Frame& f) {
 void write_frame(std::ostream& o, const Plot& plot, const Frame& f) {
   o << "<rect x=\"" << f.left << "\" y=\"" << f.top << "\" width=\"" << f.pw << "\" height=\"" << f.ph
     << "\" fill=\"none\" stroke=\"#333\"/>\n";
-  o << "<text x=\"" << f.left + f.pw / 2 << "\" y=\"" << plot.height - 14 << "\" text-anchor=\"middle\">"
-    << escape(plot.x_label) << "</text>\n";
-  o << "<text transform=\"translate(16," << f.top + f.ph / 2 << ") rotate(-90)\" text-anchor=\"middle\">"
-    << escape(plot.y_label) << "</text>\n";
+  o << "<text x=\"" << f.left + f.pw / 2 << "\" y=\"" << f.top + f.ph + 42 << "\" text-anchor=\"middle\" font-size=\""
+    << kLabelFont << "\">" << escape(plot.x_label) << "</text>\n";
+  o << "<text transform=\"translate(18," << f.top + f.ph / 2 << ") rotate(-90)\" text-anchor=\"middle\" font-size=\""
+    << kLabelFont << "\">" << escape(plot.y_label) << "</text>\n";
 }
 
 // Data, clipped to the frame.
@@ -185,24 +195,84 @@ void write_series(std::ostream& o, const Plot& plot, const Frame& f) {
   o << "</g>\n";
 }
 
-// Legend, on a translucent box so that it reads over the data.
-void write_legend(std::ostream& o, const Plot& plot, const Frame& f) {
-  std::size_t entries = 0, longest = 0;
-  for (const auto& s : plot.series)
-    if (!s.label.empty()) {
-      ++entries;
-      longest = std::max(longest, s.label.size());
+// The legend's entries (series with a label) and the size of its box.
+struct Legend {
+  std::vector<const Series*> entries;
+  double w = 0, h = 0;
+  explicit Legend(const Plot& plot) {
+    std::size_t longest = 0;
+    for (const auto& s : plot.series)
+      if (!s.label.empty()) {
+        entries.push_back(&s);
+        longest = std::max(longest, s.label.size());
+      }
+    w = kPad * 3 + kSample + kGlyph * double(longest);
+    h = kEntry * double(entries.size()) + kPad;
+  }
+};
+
+struct Box {
+  double x0, y0, x1, y1;
+  bool contains(double x, double y) const { return x >= x0 && x <= x1 && y >= y0 && y <= y1; }
+};
+
+// Whether the segment a-b (pixels) meets the box: clipped against it
+// (Liang-Barsky).
+bool meets(const Box& b, double ax, double ay, double bx, double by) {
+  double t0 = 0, t1 = 1;
+  const double dx = bx - ax, dy = by - ay;
+  const double p[4] = {-dx, dx, -dy, dy}, q[4] = {ax - b.x0, b.x1 - ax, ay - b.y0, b.y1 - ay};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0) {
+      if (q[i] < 0) return false;
+      continue;
     }
-  if (entries > 0)
-    o << "<rect x=\"" << f.left + 4 << "\" y=\"" << f.top + 3 << "\" width=\"" << 44 + 7 * longest << "\" height=\""
-      << 16 * entries + 4 << "\" fill=\"white\" fill-opacity=\"0.85\" stroke=\"#ccc\"/>\n";
-  double ly = f.top + 14;
+    const double t = q[i] / p[i];
+    if (p[i] < 0) t0 = std::max(t0, t);
+    else t1 = std::min(t1, t);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+// Whether any drawn line or marker of the plot meets the box (grown by
+// the markers' radius and half a line).
+bool box_has_data(const Plot& plot, const Frame& f, Box b) {
+  b = Box{b.x0 - 4, b.y0 - 4, b.x1 + 4, b.y1 + 4};
   for (const auto& s : plot.series) {
-    if (s.label.empty()) continue;
-    o << "<line x1=\"" << f.left + 10 << "\" y1=\"" << ly - 4 << "\" x2=\"" << f.left + 34 << "\" y2=\"" << ly - 4
-      << "\" stroke=\"" << s.color << "\" stroke-width=\"2\"" << (s.dashed ? " stroke-dasharray=\"6 4\"" : "")
-      << "/>\n<text x=\"" << f.left + 40 << "\" y=\"" << ly << "\">" << escape(s.label) << "</text>\n";
-    ly += 16;
+    const auto pts = thin(s.points, plot.max_points);
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const double x = f.X(pts[i].x), y = f.Y(pts[i].y);
+      if (b.contains(x, y)) return true;
+      if (i > 0 && meets(b, f.X(pts[i - 1].x), f.Y(pts[i - 1].y), x, y)) return true;
+    }
+  }
+  return false;
+}
+
+// The first corner of the frame (top right, top left, bottom right, bottom
+// left) where the legend's box covers no data, if any.
+std::optional<Box> free_corner(const Plot& plot, const Frame& f, const Legend& lg) {
+  const double l = f.left + 6, r = f.left + f.pw - 6 - lg.w, t = f.top + 6, btm = f.top + f.ph - 6 - lg.h;
+  for (const auto& [x, y] : {std::pair{r, t}, std::pair{l, t}, std::pair{r, btm}, std::pair{l, btm}}) {
+    const Box b{x, y, x + lg.w, y + lg.h};
+    if (!box_has_data(plot, f, b)) return b;
+  }
+  return std::nullopt;
+}
+
+// The legend's entries, one a line, in the box whose top left is (x, y).
+void write_legend(std::ostream& o, const Legend& lg, double x, double y) {
+  if (lg.entries.empty()) return;
+  o << "<rect x=\"" << x << "\" y=\"" << y << "\" width=\"" << lg.w << "\" height=\"" << lg.h
+    << "\" fill=\"white\" stroke=\"#ccc\"/>\n";
+  double ly = y + kPad + kEntry / 2;
+  for (const Series* s : lg.entries) {
+    o << "<line x1=\"" << x + kPad << "\" y1=\"" << ly << "\" x2=\"" << x + kPad + kSample << "\" y2=\"" << ly
+      << "\" stroke=\"" << s->color << "\" stroke-width=\"2\"" << (s->dashed ? " stroke-dasharray=\"6 4\"" : "")
+      << "/>\n<text x=\"" << x + 2 * kPad + kSample << "\" y=\"" << ly + 4.5 << "\">" << escape(s->label)
+      << "</text>\n";
+    ly += kEntry;
   }
 }
 
@@ -222,15 +292,27 @@ std::string escape(const std::string& text) {
   return out;
 }
 
+// The legend goes in an empty corner of the frame; when every corner has
+// data, below the x axis label, the frame shortened to make room.
 std::string render(const Plot& plot) {
-  const Frame f = fit_frame(plot);
+  const Legend lg(plot);
+  Frame f = fit_frame(plot, 0);
+  std::optional<Box> at;
+  if (!lg.entries.empty()) {
+    at = free_corner(plot, f, lg);
+    if (!at) {
+      f = fit_frame(plot, lg.h + 8);
+      const double x = f.left + (f.pw - lg.w) / 2, y = f.top + f.ph + kBottom - 4;
+      at = Box{x, y, x + lg.w, y + lg.h};
+    }
+  }
   std::ostringstream o;
   o.precision(6);
   write_header(o, plot);
   write_grid(o, f);
   write_frame(o, plot, f);
   write_series(o, plot, f);
-  write_legend(o, plot, f);
+  if (at) write_legend(o, lg, at->x0, at->y0);
   o << "</svg>\n";
   return o.str();
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 
 namespace contour::plot {
 namespace {
@@ -66,6 +67,69 @@ TEST(Svg, LongSeriesAreThinnedKeepingBothEnds) {
   q.series[0].points.clear();
   for (int i = 0; i <= 1000; i += 100) q.series[0].points.push_back({double(i), double(i % 7)});
   EXPECT_EQ(render(q), svg);
+}
+
+// The legend's box: x, y, width, height (from its <rect ... fill="white" stroke="#ccc"/>).
+struct Rect {
+  double x = 0, y = 0, w = 0, h = 0;
+};
+Rect legend_box(const std::string& svg) {
+  const auto end = svg.find("fill=\"white\" stroke=\"#ccc\"");
+  const auto at = svg.rfind("<rect", end);
+  Rect r;
+  EXPECT_EQ(std::sscanf(svg.c_str() + at, "<rect x=\"%lf\" y=\"%lf\" width=\"%lf\" height=\"%lf\"", &r.x, &r.y, &r.w,
+                        &r.h),
+            4)
+      << svg.substr(at, 120);
+  return r;
+}
+// The frame (the data area): <rect ... fill="none" stroke="#333"/>.
+Rect frame_box(const std::string& svg) {
+  const auto end = svg.find("fill=\"none\" stroke=\"#333\"");
+  const auto at = svg.rfind("<rect", end);
+  Rect r;
+  EXPECT_EQ(std::sscanf(svg.c_str() + at, "<rect x=\"%lf\" y=\"%lf\" width=\"%lf\" height=\"%lf\"", &r.x, &r.y, &r.w,
+                        &r.h),
+            4);
+  return r;
+}
+
+// Paper A's Fig. 5 path ends at (0, 6), top left: the legend must not hide
+// it (it once sat top-left whatever the data).
+TEST(Svg, TheLegendGoesToACornerWithoutData) {
+  Plot p;
+  p.equal_aspect = true;
+  p.series.push_back({"pulse path", "#d62728", {{6, 0}, {5, 0}, {5, 4}, {3, 5}, {3, 6}, {0, 6}}});
+  const std::string svg = render(p);
+  const Rect lg = legend_box(svg), fr = frame_box(svg);
+  // Top right: the path's end (0, 6) is top left.
+  EXPECT_GT(lg.x, fr.x + fr.w / 2);
+  EXPECT_LT(lg.y, fr.y + fr.h / 2);
+  // Flipped left-right, the end is top right: the legend moves to the left.
+  for (auto& pt : p.series[0].points) pt.x = -pt.x;
+  const Rect lg2 = legend_box(render(p));
+  EXPECT_LT(lg2.x + lg2.w, fr.x + fr.w / 2);
+}
+
+// Data in every corner: the legend goes below the frame, outside the data.
+TEST(Svg, WithDataInEveryCornerTheLegendGoesOutside) {
+  Plot p;
+  Series s{"a long label for a zigzag that fills the frame", "#000", {}};
+  for (int i = 0; i <= 40; ++i) s.points.push_back({double(i), double(i % 2)});
+  p.series = {s};
+  const std::string svg = render(p);
+  const Rect lg = legend_box(svg), fr = frame_box(svg);
+  EXPECT_GT(lg.y, fr.y + fr.h);
+  EXPECT_LE(lg.y + lg.h, p.height);
+}
+
+// Rates in kpps and big values print as numbers, not "1e+06".
+TEST(Svg, TickLabelsHaveNoExponentsForOrdinaryNumbers) {
+  Plot p;
+  p.series.push_back({"", "#000", {{0, 0}, {2e6, 3528000}}});
+  const std::string svg = render(p);
+  EXPECT_EQ(svg.find("e+06"), std::string::npos);
+  EXPECT_NE(svg.find(">2000000<"), std::string::npos);
 }
 
 }  // namespace

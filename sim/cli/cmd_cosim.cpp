@@ -38,6 +38,7 @@ int run_cosim_command(const std::vector<std::string>& args) {
     for (const auto& a : args)
       if (a == "--help" || a == "-h") {
         std::printf("usage: contour cosim --suite paper|smoke|full (--rate R | --sweep) [--report DIR] [--trace]\n"
+                    "  command rates: the core up to 25M pps, the 8085 engines up to 250k (docs/cosim.md)\n"
                     "  (the co-simulation program %s is not built: it needs Verilator and SystemC)\n",
                     prog.c_str());
         return 0;

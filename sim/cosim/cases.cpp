@@ -32,6 +32,16 @@ Case rounded_rectangle() {
   return c;
 }
 
+// Twenty short lines, back to back, turning through every direction: more
+// moves than the core's queue of 16 holds, so that the host waits for room
+// (the coverage bin "queue full") and pushes while the core runs.
+Case many_moves() {
+  Case c{"zigzag", "20 short lines back to back (more than the core's 16-block queue)", {}, {}};
+  const std::int64_t d[8][2] = {{3, 1}, {1, 3}, {-1, 3}, {-3, 1}, {-3, -1}, {-1, -3}, {1, -3}, {3, -1}};
+  for (int i = 0; i < 20; ++i) c.moves.push_back(Move::line(d[i % 8][0], d[i % 8][1]));
+  return c;
+}
+
 std::map<std::string, Suite> build() {
   std::map<std::string, Suite> s;
   const Case fig2 = line_case("fig2", "paper A Fig. 2: line to (6, 5), 11 pulses", 6, 5);
@@ -48,6 +58,16 @@ std::map<std::string, Suite> build() {
       arc_case("arc-3q", "three-quarter arc (0, 12) to (12, 0) CCW through Q2, Q3, Q4", 0, 12, 12, 0, Sense::CCW),
       arc_case("circle-cw", "full circle R = 10 CW from (10, 0)", 10, 0, 10, 0, Sense::CW),
       rounded_rectangle(),
+      // For the coverage bins (coverage.hpp) the cases above miss:
+      // Inside Q1 (no crossing), ends off the integer circle: the end-point
+      // rule hands a pulse outward (X arrived at 8 with D >= 0), then inward
+      // (Y arrived at 9 with D < 0).
+      arc_case("arc-k0", "arc (10, 0) to (8, 7) CCW inside Q1: no crossing; X arrives first", 10, 0, 8, 7, Sense::CCW),
+      arc_case("arc-k0-y", "arc (10, 0) to (3, 9) CCW inside Q1: no crossing; Y arrives first", 10, 0, 3, 9,
+               Sense::CCW),
+      arc_case("arc-half", "half circle (10, 0) to (-10, 0) CW through Q4, Q3: two crossings", 10, 0, -10, 0, Sense::CW),
+      line_case("line-q3", "line to (-17, -9): both axes negative", -17, -9),
+      many_moves(),
   };
   s["smoke"] = Suite{"smoke", "signs, quadrant crossings, a full circle, chained moves", smoke_cases,
                      {1e3, 3e3, 4e3, 5e3, 5.5e3, 6e3, 8e3, 10e3, 11e3, 12e3, 50e3, 250e3, 500e3, 1e6}};
@@ -110,9 +130,19 @@ Suite combined(const std::string& names) {
   return out;
 }
 
-bool engine_runs_at(const std::string& engine, double rate_pps) {
-  if (engine == "iss" || engine == "cpu") return rate_pps <= kMaxRate8085;
-  return true;
+double max_rate(const std::string& engine, double core_hz) {
+  if (engine == "iss" || engine == "cpu") return kMaxRate8085;
+  if (engine == "core") return core_hz / 2;
+  return kMaxRate;
+}
+
+bool engine_runs_at(const std::string& engine, double rate_pps, double core_hz) {
+  return rate_pps <= max_rate(engine, core_hz);
+}
+
+double core_carry_rate(double core_hz, std::uint32_t len, std::uint32_t space, std::uint32_t setup,
+                       std::uint32_t hold) {
+  return core_hz / (double(len) + double(space) + double(setup) + double(hold));
 }
 
 std::vector<Placed> place(const std::vector<Move>& moves) {
@@ -131,6 +161,12 @@ std::vector<Placed> place(const std::vector<Move>& moves) {
     out.push_back(p);
   }
   return out;
+}
+
+std::string rate_label_approx(double r) {
+  if (r <= 0) return rate_label(r);
+  const double unit = std::pow(10.0, std::floor(std::log10(r)) - 3);
+  return rate_label(std::round(r / unit) * unit);
 }
 
 std::string rate_label(double r) {

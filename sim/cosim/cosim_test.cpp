@@ -12,12 +12,15 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "cases.hpp"
+#include "coverage.hpp"
 #include "options.hpp"
 #include "report.hpp"
 #include "scoreboard.hpp"
@@ -132,6 +135,137 @@ TEST(Scoreboard, TheCoreMayNotLoseUpTo250kppsEvenIfFlagged) {
   EXPECT_EQ(judge(fig2(), expect(fig2()), 1e3, commands(11), run_of("iss", ps, 1)).verdict, Verdict::Fail);
 }
 
+// The keep-up rule follows the programmed output stage: at STEP_LEN =
+// STEP_SPACE = 65535 clocks the core carries 50M / 131090 = 381 pps, so a
+// flagged loss at 1 kpps is FLAGGED, not FAIL; at 300 pps it must keep up.
+TEST(Scoreboard, TheCoreKeepsUpOnlyToWhatItsOutputStageCarries) {
+  auto ps = pulses(kFig2);
+  ps.resize(6);
+  const double carry = core_carry_rate(50e6, 65535, 65535, 10, 10);
+  EXPECT_NEAR(carry, 381.4, 0.1);
+  EXPECT_EQ(judge(fig2(), expect(fig2()), 1e3, commands(11), run_of("core", ps, 5), carry).verdict, Verdict::Flagged);
+  EXPECT_EQ(judge(fig2(), expect(fig2()), 300, commands(11), run_of("core", ps, 5), carry).verdict, Verdict::Fail);
+  EXPECT_EQ(keep_up_rate("core", kDefaultCoreCarry), 250e3);
+}
+
+TEST(Scoreboard, EachEngineHasAStatedCommandRateLimit) {
+  EXPECT_EQ(max_rate("core", 50e6), 25e6);  // the pin, sampled at 50 MHz
+  EXPECT_EQ(max_rate("iss", 50e6), 250e3);
+  EXPECT_EQ(max_rate("cpu", 50e6), 250e3);
+  EXPECT_EQ(max_rate("model", 50e6), 50e6);
+  const Row r = not_run(fig2(), expect(fig2()), "iss", 1e6, 250e3);
+  EXPECT_EQ(r.verdict, Verdict::NotRun);
+  EXPECT_FALSE(r.acceptable());
+  EXPECT_FALSE(r.ran());
+  std::vector<Row> rows(2);
+  rows[0].verdict = Verdict::Pass;
+  rows[1] = r;
+  EXPECT_EQ(verdict_line(rows), "100.00% PASS 1 PASSED, 0 FAILED, 1 NOT RUN");
+}
+
+// A swap loses nothing: the limit table must not call it a loss.
+TEST(Scoreboard, AMismatchIsNotALoss) {
+  auto ps = pulses(kFig2);
+  std::swap(ps[2], ps[3]);
+  std::vector<Row> rows = {judge(fig2(), expect(fig2()), 1e3, commands(11), run_of("core", ps, 0))};
+  const Limit l = limit_of(rows, "fig2", "core");
+  EXPECT_EQ(l.first_loss, 0.0);
+  EXPECT_EQ(l.first_mismatch, 1e3);
+  EXPECT_EQ(l.agree_up_to, 0.0);
+}
+
+// The report draws a case in its first move's frame: Fig. 5 from (6, 0) to
+// (0, 6) as in paper A (it once started at (0, 0) and ended at (-6, 6)).
+TEST(Report, PathsAreDrawnInTheMovesOwnFrame) {
+  const auto p5 = drawn_pulse_path(fig5(), expect(fig5()));
+  ASSERT_EQ(p5.size(), 13u);
+  EXPECT_EQ(p5.front(), (std::pair<double, double>{6, 0}));
+  EXPECT_EQ(p5.back(), (std::pair<double, double>{0, 6}));
+  const auto p2 = drawn_pulse_path(fig2(), expect(fig2()));
+  EXPECT_EQ(p2.front(), (std::pair<double, double>{0, 0}));
+  EXPECT_EQ(p2.back(), (std::pair<double, double>{6, 5}));
+}
+
+// Coverage from an engine's pulses, checked against paper A's Fig. 5
+// (-X +Y +Y +Y +Y -X +Y -X +Y -X -X -X, D before the pulses 0, -11, -10,
+// -7, -2, 5, -4, 5, -2, 9, 4, 1): all in Q1 CCW, 6 inward (-X) and 6
+// outward, one D = 0 tie (the first pulse), no end-point rule, one
+// crossing, landing on the end (0, 6).
+TEST(Coverage, PaperFig5HitsItsBins) {
+  Coverage cov;
+  const auto exp = expect(fig5());
+  const auto run = run_of("cpu", pulses(kFig5), 0);
+  cov.add(fig5(), exp, run, judge(fig5(), exp, 1e3, commands(12), run));
+  const auto& b = cov.bins();
+  auto hits = [&](std::size_t i) { return b[i].total(); };
+  EXPECT_EQ(hits(bin::kArcDir + 0 * 4 + 0 * 2 + 0), 6u);  // Q1 CCW inward
+  EXPECT_EQ(hits(bin::kArcDir + 0 * 4 + 0 * 2 + 1), 6u);  // Q1 CCW outward
+  EXPECT_EQ(hits(bin::kArcTie), 1u);
+  EXPECT_EQ(hits(bin::kArcEndOut) + hits(bin::kArcEndIn), 0u);
+  EXPECT_EQ(hits(bin::kArcK + 1), 1u);
+  EXPECT_EQ(hits(bin::kArcCrossOntoEnd), 1u);
+  EXPECT_EQ(cov.hit(), 5u);
+  EXPECT_EQ(b[bin::kArcTie].hits.at("cpu"), 1u);
+  // A failed run counts nothing.
+  Coverage none;
+  auto bad = pulses(kFig5);
+  std::swap(bad[0], bad[1]);
+  const auto bad_run = run_of("cpu", bad, 0);
+  none.add(fig5(), exp, bad_run, judge(fig5(), exp, 1e3, commands(12), bad_run));
+  EXPECT_EQ(none.hit(), 0u);
+  EXPECT_EQ(none.percent(), 0.0);
+}
+
+// The end-point rule, from the contract's own reasoning: on (10, 0) to
+// (8, 7) CCW the walk reaches x = 8 with D >= 0 and must go outward; on
+// (10, 0) to (3, 9) it reaches y = 9 with D < 0 and must go inward. Fig. 2
+// (a line) ties at D = 0 on its first pulse (X) and runs X+ Y+.
+TEST(Coverage, EndPointRulesAndLines) {
+  const Suite s = suite("smoke");
+  auto find_case = [&](const std::string& n) {
+    for (const auto& c : s.cases)
+      if (c.name == n) return c;
+    throw std::runtime_error(n);
+  };
+  Coverage cov;
+  for (const char* n : {"arc-k0", "arc-k0-y"}) {
+    const Case c = find_case(n);
+    const auto exp = expect(c);
+    const auto run = run_of("model", exp.pulses, 0);
+    cov.add(c, exp, run, judge(c, exp, 1e3, commands(exp.pulses.size()), run));
+  }
+  EXPECT_GE(cov.bins()[bin::kArcEndOut].total(), 1u);
+  EXPECT_GE(cov.bins()[bin::kArcEndIn].total(), 1u);
+  EXPECT_EQ(cov.bins()[bin::kArcK + 0].total(), 2u);
+  const auto exp2 = expect(fig2());
+  const auto run2 = run_of("core", pulses(kFig2), 0);
+  cov.add(fig2(), exp2, run2, judge(fig2(), exp2, 1e3, commands(11), run2));
+  EXPECT_EQ(cov.bins()[bin::kLineSigns + 0].total(), 1u);
+  EXPECT_GE(cov.bins()[bin::kLineTie].total(), 1u);
+}
+
+// The verilator_coverage points the report counts: v_line and v_branch as
+// lines, v_toggle as toggles, a count of 0 as not hit.
+TEST(Report, ReadsTheCoresLineAndToggleCoverage) {
+  const std::string path = ::testing::TempDir() + "/contour-cov-" + std::to_string(::getpid()) + ".dat";
+  {
+    std::ofstream f(path);
+    f << "# SystemC::Coverage-3\n"
+      << "C '\001f\002a.v\001l\0021\001page\002v_line/m__W8\001o\002block' 38\n"
+      << "C '\001f\002a.v\001l\0022\001page\002v_branch/m__W8\001o\002if' 0\n"
+      << "C '\001f\002a.v\001l\0023\001page\002v_toggle/m__W8\001o\002q[0]' 5\n";
+  }
+  const auto c = read_rtl_coverage(path);
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->lines, 2u);
+  EXPECT_EQ(c->lines_hit, 1u);
+  EXPECT_EQ(c->toggles, 1u);
+  EXPECT_EQ(c->toggles_hit, 1u);
+  EXPECT_EQ(c->uncovered, (std::vector<std::string>{"v_branch/m__W8 a.v:2 if"}));
+  std::filesystem::remove(path);
+  EXPECT_FALSE(read_rtl_coverage(path));
+}
+
 TEST(Scoreboard, WrongFinalPositionFails) {
   auto run = run_of("core", pulses(kFig2), 0);
   run.position_known = true;
@@ -159,6 +293,16 @@ TEST(Options, BadInputIsAOneLineUsageError) {
   EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "1k", "--sweep"}, help), UsageError);
   EXPECT_THROW(parse_options({"--suite", "paper", "--sweep", "--inject", "core:melt:3"}, help), UsageError);
   EXPECT_THROW(parse_options({"--suite", "paper", "--sweep", "--case", "fig9"}, help), UsageError);
+  // Empty lists and items, hex and exponents, negative pulse numbers, a
+  // report path that is a file.
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "1k", "--engines", ""}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "1k", "--case", ""}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "1k,"}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "1k", "--engines", "model,,core"}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "0x10"}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "1e3"}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "1k", "--inject", "core:drop:-1"}, help), UsageError);
+  EXPECT_THROW(parse_options({"--suite", "paper", "--rate", "1k", "--report", "/proc/self/status"}, help), UsageError);
   const Options o = parse_options({"--suite", "paper", "--rate", "250k,1M,3.5k"}, help);
   EXPECT_EQ(o.rates, (std::vector<double>{250e3, 1e6, 3.5e3}));
 }
@@ -330,6 +474,118 @@ TEST(CosimRun, SwappedPulsesOnTheCoreAreCaught) {
 
 TEST(CosimRun, FlippedSignOnTheBoardIsCaught) {
   expect_caught(run_with_fault("cpu:flip:12", 1e3, {"fig5"}), "fig5", "cpu", 1e3, 12, "pulse 12: model -X, cpu +X");
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream f(path);
+  std::ostringstream o;
+  o << f.rdbuf();
+  return o.str();
+}
+
+std::string temp_dir(const std::string& name) {
+  const auto d = std::filesystem::temp_directory_path() / ("contour-cosim-test-" + std::to_string(::getpid()) + "-" + name);
+  std::filesystem::remove_all(d);
+  return d.string();
+}
+
+// An injected swap is a mismatch, not a loss, and the page says a fault was
+// injected.
+TEST(CosimRun, InjectedSwapIsReportedAsAMismatchOnAPageThatSaysSo) {
+  Options o = paper_at({1e3});
+  o.faults = {parse_fault("core:swap:3")};
+  o.engines = {"model", "core"};
+  o.cases = {"fig2"};
+  o.report_dir = temp_dir("swap");
+  const auto rows = run_child(o);
+  const ChildRow* r = find(rows, "fig2", "core", 1e3);
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->verdict, "FAIL");
+  EXPECT_EQ(r->lost, 0u);
+  const std::string html = read_text(o.report_dir + "/report.html");
+  EXPECT_NE(html.find("A fault was injected: <code>--inject core:swap:3</code>"), std::string::npos);
+  EXPECT_NE(html.find("<th>core: agrees up to</th><th>first loss</th><th>first mismatch</th>"), std::string::npos);
+  const std::string json = read_text(o.report_dir + "/report.json");
+  EXPECT_NE(json.find("{\"case\": \"fig2\", \"engine\": \"core\", \"agrees_up_to_pps\": 0, \"first_loss_pps\": null, "
+                      "\"first_mismatch_pps\": 1000}"),
+            std::string::npos)
+      << json;
+  std::filesystem::remove_all(o.report_dir);
+}
+
+// The report: rows only for the rates that ran, the header counts what ran,
+// a re-run command and absolute times for each failing row, links to the
+// traces, schema_version in the JSON, time in every JUnit testcase.
+TEST(CosimRun, ReportShowsWhatRanAndHowToReRunAFailure) {
+  Options o = paper_at({2e3, 1e6});
+  o.faults = {parse_fault("iss:flip:2")};
+  o.engines = {"model", "iss"};
+  o.cases = {"fig5"};
+  o.trace = true;  // no Verilated engine: no trace file
+  o.report_dir = temp_dir("report");
+  const auto rows = run_child(o);
+  ASSERT_EQ(rows.size(), 4u);
+  const ChildRow* nr = find(rows, "fig5", "iss", 1e6);
+  ASSERT_TRUE(nr);
+  EXPECT_EQ(nr->verdict, "NOT RUN");
+  const std::string html = read_text(o.report_dir + "/report.html");
+  EXPECT_NE(html.find("1 case(s), 2 (case, rate) run(s) at 2 rate(s) from 2k to 1M pps; 3 row(s) ran (2 passed, 1 "
+                      "failed), 1 NOT RUN"),
+            std::string::npos)
+      << html.substr(0, 3000);
+  EXPECT_NE(html.find("Re-run this row alone: <code>contour cosim --suite paper --case fig5 --rate 2k --engines "
+                      "model,iss --inject iss:flip:2</code>"),
+            std::string::npos);
+  EXPECT_NE(html.find("the first divergence came at "), std::string::npos);
+  EXPECT_NE(html.find(">command rate (kpps)</text>"), std::string::npos);  // as the tables
+  EXPECT_EQ(html.find("e+06"), std::string::npos);
+  EXPECT_EQ(html.find("<tr><td>250k</td>"), std::string::npos);  // no row for a rate that did not run
+  EXPECT_NE(html.find("<td class=\"NOTRUN\""), std::string::npos);
+  const std::string json = read_text(o.report_dir + "/report.json");
+  EXPECT_EQ(json.rfind("{\n  \"schema_version\": 2,\n", 0), 0u) << json.substr(0, 200);
+  EXPECT_NE(json.find("\"rerun\": \"contour cosim --suite paper --case fig5 --rate 2k --engines model,iss --inject "
+                      "iss:flip:2\""),
+            std::string::npos);
+  EXPECT_NE(json.find("\"sim_time_us\": "), std::string::npos);
+  const std::string junit = read_text(o.report_dir + "/junit.xml");
+  std::size_t cases = 0, timed = 0;
+  for (std::size_t at = 0; (at = junit.find("<testcase ", at)) != std::string::npos; ++at, ++cases)
+    timed += junit.compare(junit.find('>', at) - 1, 1, "\"") == 0 &&
+             junit.substr(at, junit.find('>', at) - at).find(" time=\"") != std::string::npos;
+  EXPECT_EQ(cases, 4u);
+  EXPECT_EQ(timed, 4u) << junit;
+  EXPECT_NE(junit.find("<skipped message="), std::string::npos);
+  std::filesystem::remove_all(o.report_dir);
+}
+
+// The core's FST trace is linked from the page, relative to it.
+TEST(CosimRun, ReportLinksTheTraces) {
+  Options o = paper_at({100e3});
+  o.engines = {"model", "core"};
+  o.cases = {"fig2"};
+  o.trace = true;
+  o.report_dir = temp_dir("trace");
+  run_child(o);
+  EXPECT_TRUE(std::filesystem::exists(o.report_dir + "/core.fst"));
+  EXPECT_NE(read_text(o.report_dir + "/report.html").find("<a href=\"core.fst\">core.fst</a>"), std::string::npos);
+  std::filesystem::remove_all(o.report_dir);
+}
+
+// STEP_LEN = STEP_SPACE = 65535 clocks: the output stage carries 381 pps,
+// so at 1 kpps the core loses pulses, flags each one, and does not FAIL.
+TEST(CosimRun, SlowOutputTimingIsNotAFalseFail) {
+  Options o = paper_at({1e3});
+  o.engines = {"model", "core"};
+  o.timing.len = o.timing.space = 65535;
+  const auto rows = run_child(o);
+  ASSERT_EQ(rows.size(), 4u);
+  for (const char* c : {"fig2", "fig5"}) {
+    const ChildRow* r = find(rows, c, "core", 1e3);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->verdict, "FLAGGED") << c << ": " << r->summary;
+    EXPECT_GT(r->lost, 0u);
+    EXPECT_EQ(static_cast<std::int64_t>(r->lost), r->overruns);
+  }
 }
 
 // The core's clock runs only after command pulses and bus accesses (a

@@ -3,7 +3,9 @@
 #include <verilated.h>
 #include <verilated_fst_sc.h>
 
+#include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <fstream>
 #include <stdexcept>
 
@@ -93,6 +95,11 @@ Fault parse_fault(const std::string& text) {
     throw std::invalid_argument("--inject '" + text + "': pulse number '" + n + "' is not a positive integer");
   f.at = static_cast<std::uint64_t>(v);
   return f;
+}
+
+std::string to_string(const Fault& f) {
+  const char* kind = f.kind == Fault::Kind::Drop ? "drop" : f.kind == Fault::Kind::Swap ? "swap" : "flip";
+  return f.engine + ":" + kind + ":" + std::to_string(f.at);
 }
 
 void FaultInjector::pulse(const Pulse& p, const std::string& state) {
@@ -229,6 +236,7 @@ CoreCosimEngine::CoreCosimEngine(sc_core::sc_module_name n, double f_clk_hz, Ste
   top_->o_pulse_neg(pulse_neg_);
   top_->o_busy(busy_);
   SC_THREAD(clock_thread);
+  SC_THREAD(feeder_thread);
   SC_METHOD(on_cmd);
   sensitive << i_cmd.pos();
   dont_initialize();
@@ -292,8 +300,79 @@ std::uint32_t CoreCosimEngine::wb_read(std::uint32_t adr) {
   return v;
 }
 
+namespace {
+
+// The host's part (docs/regmap.md) for one move: validate, then stage
+// magnitudes, signs, and for an arc the start quadrant and crossings.
+void stage_move(const Move& m, const std::function<void(std::uint32_t, std::uint32_t)>& write) {
+  validate<24>(m);
+  auto mag = [](std::int64_t v) { return static_cast<std::uint32_t>(v < 0 ? -v : v); };
+  std::uint32_t mode = 0;
+  if (m.is_arc()) {
+    const auto plan = Circular<24>::validate(m.xs, m.ys, m.xe, m.ye, m.sense);
+    mode = INTERP_BLK_MODE_ARC_MASK | (m.sense == Sense::CW ? INTERP_BLK_MODE_CW_MASK : 0u) |
+           static_cast<std::uint32_t>(plan.q_start) << INTERP_BLK_MODE_Q_LSB |
+           static_cast<std::uint32_t>(plan.crossings) << INTERP_BLK_MODE_K_LSB;
+    write(INTERP_REG_BLK_XS, mag(m.xs));
+    write(INTERP_REG_BLK_YS, mag(m.ys));
+  } else {
+    mode = (m.xe < 0 ? INTERP_BLK_MODE_SXN_MASK : 0u) | (m.ye < 0 ? INTERP_BLK_MODE_SYN_MASK : 0u);
+  }
+  write(INTERP_REG_BLK_MODE, mode);
+  write(INTERP_REG_BLK_XE, mag(m.xe));
+  write(INTERP_REG_BLK_YE, mag(m.ye));
+}
+
+}  // namespace
+
+// Stages and pushes `p`; false when the queue is full (then, with
+// `probe_reject`, it pushes anyway once: the core must refuse it, set
+// REJECT and queue nothing; CLEAR resets REJECT, and OVR_COUNT, so only
+// before the first command pulse).
+bool CoreCosimEngine::push_move(const Placed& p, bool probe_reject) {
+  stage_move(p.move, [this](std::uint32_t a, std::uint32_t v) { wb_write(a, v); });
+  if (wb_read(INTERP_REG_STATUS) & INTERP_STATUS_FULL_MASK) {
+    if (waited_for_ != next_push_) ++events_["queue_full"], waited_for_ = next_push_;
+    if (probe_reject && !events_.count("push_refused")) {
+      const std::uint32_t level = wb_read(INTERP_REG_STATUS) >> INTERP_STATUS_LEVEL_LSB & 0xFFu;
+      wb_write(INTERP_REG_PUSH, 1);
+      const std::uint32_t st = wb_read(INTERP_REG_STATUS);
+      if (!(st & INTERP_STATUS_REJECT_MASK) || (st >> INTERP_STATUS_LEVEL_LSB & 0xFFu) != level)
+        throw std::runtime_error("core: a PUSH into the full queue was not refused");
+      ++events_["push_refused"];
+      wb_write(INTERP_REG_CTRL, INTERP_CTRL_CLEAR_MASK);
+    }
+    return false;
+  }
+  wb_write(INTERP_REG_PUSH, 1);
+  if (wb_read(INTERP_REG_STATUS) & INTERP_STATUS_REJECT_MASK) throw std::runtime_error("core: PUSH refused");
+  return true;
+}
+
+// Before each case: two moves pushed (the first one loaded, no command
+// source yet), then ABORT; the core must drop both (not busy, queue empty).
+// Were one left, it would run before the case's moves and the scoreboard
+// would see its pulses.
+void CoreCosimEngine::exercise_abort() {
+  const Move junk[2] = {Move::line(7, -3), Move::arc(5, 0, 0, 5, Sense::CCW)};
+  for (const Move& m : junk) {
+    stage_move(m, [this](std::uint32_t a, std::uint32_t v) { wb_write(a, v); });
+    wb_write(INTERP_REG_PUSH, 1);
+  }
+  for (int n = 0; !(wb_read(INTERP_REG_STATUS) & INTERP_STATUS_BUSY_MASK); ++n)
+    if (n > 100) throw std::runtime_error("core: the core did not load the move to abort");
+  wb_write(INTERP_REG_CTRL, INTERP_CTRL_ABORT_MASK);
+  const std::uint32_t st = wb_read(INTERP_REG_STATUS);
+  if ((st & INTERP_STATUS_BUSY_MASK) || !(st & INTERP_STATUS_EMPTY_MASK) || (st >> INTERP_STATUS_LEVEL_LSB & 0xFFu))
+    throw std::runtime_error("core: ABORT left a move (STATUS " + std::to_string(st) + ")");
+  ++events_["abort"];
+}
+
 void CoreCosimEngine::begin_case(const Case& c) {
   moves_ = place(c.moves);
+  next_push_ = 0;
+  waited_for_ = SIZE_MAX;
+  error_.clear();
   keep_awake(64);
   rst_.write(true);
   for (int i = 0; i < 4; ++i) sc_core::wait(clk_.negedge_event());
@@ -302,37 +381,43 @@ void CoreCosimEngine::begin_case(const Case& c) {
   wb_write(INTERP_REG_STEP_SPACE, timing_.space);
   wb_write(INTERP_REG_DIR_SETUP, timing_.setup);
   wb_write(INTERP_REG_DIR_HOLD, timing_.hold);
-  for (const auto& p : moves_) {
-    // The host's part (docs/regmap.md): validate, then stage magnitudes,
-    // signs, and for an arc the start quadrant and crossings.
-    const Move& m = p.move;
-    validate<24>(m);
-    auto mag = [](std::int64_t v) { return static_cast<std::uint32_t>(v < 0 ? -v : v); };
-    std::uint32_t mode = 0;
-    if (m.is_arc()) {
-      const auto plan = Circular<24>::validate(m.xs, m.ys, m.xe, m.ye, m.sense);
-      mode = INTERP_BLK_MODE_ARC_MASK | (m.sense == Sense::CW ? INTERP_BLK_MODE_CW_MASK : 0u) |
-             static_cast<std::uint32_t>(plan.q_start) << INTERP_BLK_MODE_Q_LSB |
-             static_cast<std::uint32_t>(plan.crossings) << INTERP_BLK_MODE_K_LSB;
-      wb_write(INTERP_REG_BLK_XS, mag(m.xs));
-      wb_write(INTERP_REG_BLK_YS, mag(m.ys));
-    } else {
-      mode = (m.xe < 0 ? INTERP_BLK_MODE_SXN_MASK : 0u) | (m.ye < 0 ? INTERP_BLK_MODE_SYN_MASK : 0u);
-    }
-    wb_write(INTERP_REG_BLK_MODE, mode);
-    wb_write(INTERP_REG_BLK_XE, mag(m.xe));
-    wb_write(INTERP_REG_BLK_YE, mag(m.ye));
-    if (wb_read(INTERP_REG_STATUS) & INTERP_STATUS_FULL_MASK) throw std::runtime_error("core: move queue full");
-    wb_write(INTERP_REG_PUSH, 1);
-    if (wb_read(INTERP_REG_STATUS) & INTERP_STATUS_REJECT_MASK) throw std::runtime_error("core: PUSH refused");
-  }
+  exercise_abort();
+  while (next_push_ < moves_.size() && push_move(moves_[next_push_], true)) ++next_push_;
   wb_write(INTERP_REG_CTRL, kCtrlSrcPin);
   // The first block is loaded before the first command pulse.
   for (int n = 0; !(wb_read(INTERP_REG_STATUS) & INTERP_STATUS_BUSY_MASK); ++n)
     if (n > 100) throw std::runtime_error("core: the core did not start the first move");
+  if (next_push_ < moves_.size()) {
+    feeding_ = true;
+    feed_ev_.notify(SC_ZERO_TIME);
+  }
+}
+
+// Pushes the moves that did not fit, as the queue makes room (polled every
+// 2 us, well inside the 15 moves the queue holds), until end_case.
+void CoreCosimEngine::feeder_thread() {
+  while (true) {
+    sc_core::wait(feed_ev_);
+    feeder_busy_ = true;
+    try {
+      while (feeding_ && next_push_ < moves_.size()) {
+        if (push_move(moves_[next_push_], false)) ++next_push_;
+        else sc_core::wait(2, sc_core::SC_US);
+      }
+    } catch (const std::exception& e) {
+      error_ = e.what();
+    }
+    feeder_busy_ = false;
+    feeder_idle_.notify(SC_ZERO_TIME);
+  }
 }
 
 void CoreCosimEngine::end_case(EngineRun& run) {
+  feeding_ = false;
+  while (feeder_busy_) sc_core::wait(feeder_idle_);
+  run.error = error_;
+  if (next_push_ < moves_.size())
+    run.error += (run.error.empty() ? "" : "; ") + std::to_string(moves_.size() - next_push_) + " moves never pushed";
   run.overruns_known = true;
   run.overruns = wb_read(INTERP_REG_OVR_COUNT);
   run.position_known = true;
@@ -360,6 +445,7 @@ void IssCosimEngine::begin_case(const Case& c) {
   queued_.clear();
   slot_move_ = {-1, -1};
   pulses_ = 0;
+  waited_ = 0;
   per_move_.clear();
   edge_ = false;
   error_.clear();
@@ -377,6 +463,8 @@ void IssCosimEngine::feed() {
     next_slot_ ^= 1;
     ++next_move_;
   }
+  // Both mailbox slots busy with a move waiting: the program's queue is full.
+  if (next_move_ < moves_.size() && waited_ < next_move_ + 1) ++events_["queue_full"], waited_ = next_move_ + 1;
 }
 
 std::span<const std::uint8_t, 256> IssCosimEngine::mailbox() const {
@@ -601,6 +689,7 @@ void BoardCosimEngine::host_thread() {
       reply_.notify(SC_ZERO_TIME);
     } else if (active_ && error_.empty() && next_move_ < moves_.size()) {
       if (slot_free(next_slot_)) queue_next();
+      else if (waited_ < next_move_ + 1) ++events_["queue_full"], waited_ = next_move_ + 1;  // both slots busy
     } else {
       sc_core::wait(request_ev_);
     }
@@ -613,6 +702,7 @@ void BoardCosimEngine::begin_case(const Case& c) {
   next_slot_ = 0;
   queued_.clear();
   slot_move_ = {-1, -1};
+  waited_ = 0;
   error_.clear();
   request_ = Request::Begin;
   request_ev_.notify(SC_ZERO_TIME);

@@ -20,6 +20,7 @@
 #include <systemc>
 
 #include <array>
+#include <map>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -76,6 +77,8 @@ struct Fault {
 };
 // "ENGINE:drop:N", "ENGINE:swap:N", "ENGINE:flip:N". Throws std::invalid_argument.
 Fault parse_fault(const std::string& text);
+// The same text back ("core:swap:3").
+std::string to_string(const Fault& f);
 
 class FaultInjector final : public Sink {
  public:
@@ -105,8 +108,12 @@ class CosimEngine : public sc_core::sc_module {
   virtual void open_trace(const std::string&) {}
   virtual void close_trace() {}
   void set_sink(Sink* s) { sink_ = s; }
+  // Functional-coverage counters of the case (EngineRun::events); the
+  // controller clears them before begin_case and copies them after end_case.
+  std::map<std::string, std::uint64_t>& events() { return events_; }
 
  protected:
+  std::map<std::string, std::uint64_t> events_;
   void emit(const Pulse& p, const std::string& state = "") {
     if (sink_) sink_->pulse(p, state);
   }
@@ -181,6 +188,9 @@ class CoreCosimEngine final : public VerilatedCosimEngine {
   void clock_thread();
   void on_cmd();
   void keep_awake(std::uint64_t cycles);
+  void exercise_abort();
+  bool push_move(const Placed& p, bool probe_reject);
+  void feeder_thread();
   void wb_write(std::uint32_t adr, std::uint32_t v);
   std::uint32_t wb_read(std::uint32_t adr);
   void wb_cycle(bool we, std::uint32_t adr, std::uint32_t v, std::uint32_t* out);
@@ -192,11 +202,21 @@ class CoreCosimEngine final : public VerilatedCosimEngine {
   sc_core::sc_time run_until_;
   sc_core::sc_event wake_;
   std::uint64_t clocks_ = 0;
-  sc_core::sc_signal<bool> clk_{"clk"}, rst_{"rst"}, cyc_{"cyc"}, stb_{"stb"}, we_{"we"}, ack_{"ack"};
-  sc_core::sc_signal<std::uint32_t> adr_{"adr"}, wdat_{"wdat"}, rdat_{"rdat"};
+  sc_core::sc_signal<bool> clk_{"clk"}, rst_{"rst"}, ack_{"ack"};
+  // The bus is driven by the controller (begin_case, end_case) and by
+  // feeder_thread, never at once (end_case waits for the feeder to stop).
+  sc_core::sc_signal<bool, sc_core::SC_MANY_WRITERS> cyc_{"cyc"}, stb_{"stb"}, we_{"we"};
+  sc_core::sc_signal<std::uint32_t, sc_core::SC_MANY_WRITERS> adr_{"adr"}, wdat_{"wdat"};
+  sc_core::sc_signal<std::uint32_t> rdat_{"rdat"};
   sc_core::sc_signal<bool> pulse_{"pulse"}, pulse_y_{"pulse_y"}, pulse_neg_{"pulse_neg"}, busy_{"busy"};
   std::unique_ptr<Vcosim_interp> top_;
   std::vector<Placed> moves_;
+  // Moves that did not fit the queue at begin_case: pushed by feeder_thread
+  // as room appears, until end_case.
+  std::size_t next_push_ = 0, waited_for_ = 0;
+  bool feeding_ = false, feeder_busy_ = false;
+  sc_core::sc_event feed_ev_, feeder_idle_;
+  std::string error_;
 };
 
 // --- iss: the program on the C++ ISS ----------------------------------------
@@ -225,6 +245,7 @@ class IssCosimEngine final : public CosimEngine {
   std::array<int, 2> slot_move_{-1, -1};                   // index into queued_ per slot
   std::uint64_t pulses_ = 0;
   std::vector<std::uint64_t> per_move_;  // output pulses of each queued move
+  std::size_t waited_ = 0;               // moves that waited for a free slot (coverage)
   bool edge_ = false;
   bool active_ = false, parked_ = true;
   std::string error_;
@@ -268,6 +289,7 @@ class BoardCosimEngine final : public VerilatedCosimEngine {
   int next_slot_ = 0;
   std::vector<std::unique_ptr<sw8085::SlotMove>> queued_;
   std::array<int, 2> slot_move_{-1, -1};
+  std::size_t waited_ = 0;  // moves that waited for a free slot (coverage)
   // Every host port access happens in host_thread; the controller asks.
   enum class Request { None, Begin, End };
   Request request_ = Request::None;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
 
 #include "sim/cli/numbers.hpp"
@@ -13,13 +14,19 @@ namespace contour::cosim {
 
 namespace {
 
-std::vector<std::string> split(const std::string& s) {
+// "a,b,c" -> {a, b, c}; an empty list or an empty item ("", "a,", "a,,b")
+// is an error naming `what`.
+std::vector<std::string> split(const std::string& s, const std::string& what) {
+  if (s.empty()) throw UsageError(what + ": empty list");
   std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ','))
-    if (!item.empty()) out.push_back(item);
-  return out;
+  std::size_t start = 0;
+  while (true) {
+    const auto comma = s.find(',', start);
+    out.push_back(s.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (out.back().empty()) throw UsageError(what + " '" + s + "': an empty item in the list");
+    if (comma == std::string::npos) return out;
+    start = comma + 1;
+  }
 }
 
 // Clocks of the core (1..65535), or a duration with its unit ("2us",
@@ -49,7 +56,7 @@ double parse_rate(const std::string& text, const std::string& what) {
   const auto v = cli::read_real(text);  // the CLI's number rules (sim/cli/numbers.hpp)
   if (!v) throw UsageError(what + " '" + text + "' is not a rate (examples: 4000, 3.5k, 250k, 1M; decimal only)");
   const double r = *v;
-  if (r < 1 || r > 50e6) throw UsageError(what + " '" + text + "' is outside 1 .. 50M pulses/s");
+  if (r < 1 || r > kMaxRate) throw UsageError(what + " '" + text + "' is outside 1 .. 50M pulses/s");
   return r;
 }
 
@@ -60,7 +67,11 @@ std::string usage() {
          "  --step-len, --step-space: N core clocks, or a duration T with its unit (2us, 1500ns)\n"
          "  Co-simulates the golden model, the Verilog core (core), the 8085 program on the ISS (iss)\n"
          "  and on the Verilog 8085 board (cpu) on the same command pulse train; exit 0 only when\n"
-         "  every required equivalence holds (docs/cosim.md).\n" +
+         "  every required equivalence holds (docs/cosim.md).\n"
+         "  Command rates: 1 .. 50M pps; the core takes up to 25M (its command pin is sampled at\n"
+         "  50 MHz: a higher --rate with the core is refused); the 8085 engines run up to 250k,\n"
+         "  above it their rows say NOT RUN. The core must lose nothing up to 250k pps or the rate\n"
+         "  its output stage carries, 50M / (step-len + step-space + 20) pps, whichever is lower.\n" +
          std::string(cli::kNumberRules);
 }
 
@@ -110,22 +121,23 @@ void parse_suite(Parse& p) {
 
 void parse_rates(Parse& p) {
   const std::string v = p.value();
-  const auto items = cli::read_list(v);
-  if (!items) throw UsageError("--rate '" + v + "': an empty item in the list");
-  for (const auto& r : *items) p.o.rates.push_back(parse_rate(r, "--rate"));
+  for (const auto& r : split(v, "--rate")) p.o.rates.push_back(parse_rate(r, "--rate"));
   p.cmd.push_back("--rate " + v);
 }
 
 void parse_report_dir(Parse& p) {
   p.o.report_dir = p.value();
   if (p.o.report_dir.empty()) throw UsageError("--report: empty directory name");
+  std::error_code ec;
+  if (std::filesystem::exists(p.o.report_dir, ec) && !std::filesystem::is_directory(p.o.report_dir, ec))
+    throw UsageError("--report '" + p.o.report_dir + "' is a file, not a directory");
   p.cmd.push_back("--report " + p.o.report_dir);
 }
 
 void parse_engines(Parse& p) {
   const std::string v = p.value();
   p.o.engines.clear();
-  for (const auto& e : split(v)) {
+  for (const auto& e : split(v, "--engines")) {
     bool known = false;
     for (const auto& n : engine_names()) known |= n == e;
     if (!known)
@@ -139,7 +151,7 @@ void parse_engines(Parse& p) {
 
 void parse_cases(Parse& p) {
   const std::string v = p.value();
-  for (const auto& c : split(v)) p.o.cases.push_back(c);
+  for (const auto& c : split(v, "--case")) p.o.cases.push_back(c);
   p.cmd.push_back("--case " + v);
 }
 

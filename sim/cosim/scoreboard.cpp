@@ -23,10 +23,14 @@ Expected expect(const Case& c) {
   return e;
 }
 
-bool loss_forbidden(const std::string& engine, double rate_pps) {
-  if (engine == "model") return true;
-  if (engine == "core") return rate_pps <= kCoreRequiredRate;
-  return rate_pps <= kRequiredRate8085;
+double keep_up_rate(const std::string& engine, double core_carry_pps) {
+  if (engine == "model") return kMaxRate;
+  if (engine == "core") return std::min(kCoreRequiredRate, core_carry_pps);
+  return kRequiredRate8085;
+}
+
+bool loss_forbidden(const std::string& engine, double rate_pps, double core_carry_pps) {
+  return rate_pps <= keep_up_rate(engine, core_carry_pps);
 }
 
 namespace {
@@ -50,6 +54,7 @@ Divergence make_divergence(const std::string& engine, const Expected& exp, const
   const std::optional<Pulse> ep = k < run.out.size() ? std::optional<Pulse>(run.out[k].pulse) : std::nullopt;
   d.summary = "pulse " + std::to_string(k + 1) + ": model " + side(mp) + ", " + engine + " " + side(ep);
   if (ep && !mp) d.summary += " (an extra pulse after the end)";
+  if (ep) d.t_us = run.out[k].t_us;
   // Positions of the engine, from its own pulses.
   std::vector<std::pair<std::int64_t, std::int64_t>> epos{{0, 0}};
   for (const auto& o : run.out) {
@@ -75,7 +80,7 @@ Divergence make_divergence(const std::string& engine, const Expected& exp, const
     if (has_e) {
       const auto& e = run.out[i];
       o << to_string(e.pulse) << "  at " << pos_text(epos[i + 1].first, epos[i + 1].second) << "  t = "
-        << fmt_us(e.t_us) << " us";
+        << fmt_us(e.t_us) << " us (SystemC " << fmt_us(run.t0_us + e.t_us) << " us)";
       if (!e.state.empty()) o << "  " << e.state;
     } else {
       o << "(no pulse)";
@@ -87,7 +92,8 @@ Divergence make_divergence(const std::string& engine, const Expected& exp, const
 }
 
 // A row naming the run, with its counts and no verdict yet.
-Row row_of(const Case& c, const Expected& exp, double rate_pps, std::size_t commands, const EngineRun& run) {
+Row row_of(const Case& c, const Expected& exp, double rate_pps, std::size_t commands, const EngineRun& run,
+           double core_carry_pps) {
   Row r;
   r.case_name = c.name;
   r.engine = run.engine;
@@ -95,7 +101,8 @@ Row row_of(const Case& c, const Expected& exp, double rate_pps, std::size_t comm
   r.commands = commands;
   r.expected = exp.pulses.size();
   r.pulses = run.out.size();
-  r.required = loss_forbidden(run.engine, rate_pps);
+  r.required = loss_forbidden(run.engine, rate_pps, core_carry_pps);
+  r.case_start_us = run.t0_us;
   return r;
 }
 
@@ -127,7 +134,7 @@ void record_divergence(const Expected& exp, const EngineRun& run, std::size_t fi
 // Pulses lost: every command pulse must give one output pulse; every lost
 // pulse must have been flagged as an overrun, and nothing else; and none may
 // be lost where the engine must keep up.
-void check_losses(const EngineRun& run, bool diverged, Row& r, std::vector<std::string>& why) {
+void check_losses(const EngineRun& run, bool diverged, double keep_up_pps, Row& r, std::vector<std::string>& why) {
   r.lost = run.out.size() < r.commands ? r.commands - run.out.size() : 0;
   if (run.out.size() > r.commands && !diverged) why.push_back("more output pulses than command pulses");
   if (run.overruns_known) {
@@ -140,7 +147,7 @@ void check_losses(const EngineRun& run, bool diverged, Row& r, std::vector<std::
   }
   if (r.required && r.lost > 0)
     why.push_back(std::to_string(r.lost) + " pulses lost at " + rate_label(r.rate_pps) + " pps, where " +
-                  run.engine + " must keep up");
+                  run.engine + " must keep up (up to " + rate_label_approx(keep_up_pps) + " pps)");
 }
 
 // Final position: the engine's own count against the model's after as many
@@ -200,21 +207,40 @@ const char* to_string(Verdict v) {
     case Verdict::Pass: return "PASS";
     case Verdict::Flagged: return "FLAGGED";
     case Verdict::Fail: return "FAIL";
+    case Verdict::NotRun: return "NOT RUN";
   }
   return "FAIL";
 }
 
+const char* css_class(Verdict v) { return v == Verdict::NotRun ? "NOTRUN" : to_string(v); }
+
 Row judge(const Case& c, const Expected& exp, double rate_pps, const std::vector<double>& cmd_us,
-          const EngineRun& run) {
-  Row r = row_of(c, exp, rate_pps, cmd_us.size(), run);
+          const EngineRun& run, double core_carry_pps) {
+  Row r = row_of(c, exp, rate_pps, cmd_us.size(), run, core_carry_pps);
   std::vector<std::string> why;
   const std::optional<std::size_t> first = count_mismatches(exp, run, r);
   if (first) record_divergence(exp, run, *first, r, why);
-  check_losses(run, first.has_value(), r, why);
+  check_losses(run, first.has_value(), keep_up_rate(run.engine, core_carry_pps), r, why);
   if (!first) check_final_position(exp, run, why);
   if (!run.error.empty()) why.insert(why.begin(), "simulation error: " + run.error);
   if (!first) measure_latency(cmd_us, run, r, why);
   give_verdict(why, r);
+  return r;
+}
+
+}  // namespace contour::cosim
+
+namespace contour::cosim {
+
+Row not_run(const Case& c, const Expected& exp, const std::string& engine, double rate_pps, double max_pps) {
+  Row r;
+  r.case_name = c.name;
+  r.engine = engine;
+  r.rate_pps = rate_pps;
+  r.expected = exp.pulses.size();
+  r.verdict = Verdict::NotRun;
+  r.note = engine + " takes command rates up to " + rate_label(max_pps) + " pps: not run at " + rate_label(rate_pps) +
+           " pps";
   return r;
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +32,12 @@ struct EngineRun {
   bool position_known = false;  // the engine reports its own position at the end
   std::int64_t x = 0, y = 0;    // absolute, on the case's path
   std::string error;            // a simulation error (bus fault, timeout, ...)
+  double t0_us = 0;             // SystemC time at which the case started (the pulses' t_us count from it)
+  // Functional-coverage hooks: what the engine's host side did, counted by
+  // the engine (coverage.hpp): "queue_full" (a move waited for room),
+  // "push_refused" (the core refused a PUSH into its full queue),
+  // "abort" (the core dropped a loaded and a queued move on ABORT).
+  std::map<std::string, std::uint64_t> events;
 };
 
 // The golden model's answer for a case: every pulse, the state after it and
@@ -47,14 +54,18 @@ struct Divergence {
   std::uint64_t index = 0;  // 1-based output pulse number
   std::string summary;      // one line: "pulse 3: model +X, core +Y"
   std::string context;      // a window of pulses on both sides, one per line
+  double t_us = -1;         // the engine's diverging pulse, since the case started (-1: it gave none)
 };
 
 // PASS: the model's pulses, nothing lost. FLAGGED: the model's pulses, and
 // every lost command pulse was flagged (allowed above an engine's limit).
-// FAIL: anything else.
-enum class Verdict { Pass, Flagged, Fail };
-// "PASS", "FLAGGED", "FAIL": the word of the reports (and its CSS class).
+// FAIL: anything else. NOT RUN: the engine cannot take the rate (above its
+// max_rate); neither passed nor failed.
+enum class Verdict { Pass, Flagged, Fail, NotRun };
+// "PASS", "FLAGGED", "FAIL", "NOT RUN": the word of the reports.
 const char* to_string(Verdict v);
+// "PASS", "FLAGGED", "FAIL", "NOTRUN": the CSS class of a report cell.
+const char* css_class(Verdict v);
 
 // One line of the report: a case on an engine at a rate.
 struct Row {
@@ -76,16 +87,27 @@ struct Row {
   std::vector<Pulse> path;      // the engine's pulses, kept when it diverged (for the plot)
   // PASS, or FLAGGED (losses above the engine's limit, every one flagged):
   // not a failure. The verdict line counts these rows as PASSED.
-  bool acceptable() const { return verdict != Verdict::Fail; }
+  bool acceptable() const { return verdict == Verdict::Pass || verdict == Verdict::Flagged; }
+  bool ran() const { return verdict != Verdict::NotRun; }
+  double case_start_us = 0;     // SystemC time at which the case started (EngineRun::t0_us)
+  double wall_seconds = 0;      // wall time of the case's simulation, shared among its engines
 };
 
-// Whether `engine` must lose nothing at `rate` (the model and the core up
-// to 250 kpps; the 8085 engines up to kRequiredRate8085).
+// The rate up to which `engine` must lose nothing: the model always, the
+// core up to kCoreRequiredRate or what its output stage carries
+// (`core_carry_pps`, core_carry_rate()), whichever is lower, the 8085
+// engines up to kRequiredRate8085.
 inline constexpr double kRequiredRate8085 = 1e3;
-bool loss_forbidden(const std::string& engine, double rate_pps);
+double keep_up_rate(const std::string& engine, double core_carry_pps);
+// The core at its default output timing (50/50/10/10 clocks at 50 MHz).
+inline constexpr double kDefaultCoreCarry = 50e6 / 120;
+bool loss_forbidden(const std::string& engine, double rate_pps, double core_carry_pps = kDefaultCoreCarry);
 
 // Judges one engine's run: `cmd_us` are the times of the command pulses.
 Row judge(const Case& c, const Expected& exp, double rate_pps, const std::vector<double>& cmd_us,
-          const EngineRun& run);
+          const EngineRun& run, double core_carry_pps = kDefaultCoreCarry);
+
+// The row of an engine that could not take `rate_pps` (Verdict::NotRun).
+Row not_run(const Case& c, const Expected& exp, const std::string& engine, double rate_pps, double max_pps);
 
 }  // namespace contour::cosim

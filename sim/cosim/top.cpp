@@ -5,12 +5,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <stdexcept>
 
+#include "options.hpp"
 #include "report.hpp"
 
 using sc_core::sc_time;
@@ -59,6 +61,7 @@ class Top : public sc_core::sc_module {
 
   std::vector<std::unique_ptr<Slot>>& slots() { return slots_; }
   std::vector<Row> rows;
+  Coverage coverage;
 
  private:
   void progress(std::size_t done, std::size_t total, const std::string& what) {
@@ -77,7 +80,7 @@ class Top : public sc_core::sc_module {
     for (double r : rates_)
       for (const auto& c : cases_)
         for (const auto& s : slots_)
-          if (runs(c, r) && engine_runs_at(s->engine->engine(), r)) ++total;
+          if (runs(c, r) && engine_runs_at(s->engine->engine(), r, opt_.core_hz)) ++total;
     for (double rate : rates_) {
       for (std::size_t ci = 0; ci < cases_.size(); ++ci) {
         const Case& c = cases_[ci];
@@ -85,11 +88,16 @@ class Top : public sc_core::sc_module {
         const Expected& exp = exps_[ci];
         std::vector<Slot*> act;
         std::map<Slot*, std::string> errors;
-        for (auto& s : slots_)
-          if (engine_runs_at(s->engine->engine(), rate)) act.push_back(s.get());
+        for (auto& s : slots_) {
+          const std::string e = s->engine->engine();
+          if (engine_runs_at(e, rate, opt_.core_hz)) act.push_back(s.get());
+          else rows.push_back(not_run(c, exp, e, rate, max_rate(e, opt_.core_hz)));
+        }
+        const auto wall0 = std::chrono::steady_clock::now();
         for (Slot* s : act) {
           if (s->fault) s->fault->reset();
           s->rec.start(sc_core::sc_time_stamp());
+          s->engine->events().clear();
           try {
             s->engine->begin_case(c);
           } catch (const std::exception& e) {
@@ -122,9 +130,15 @@ class Top : public sc_core::sc_module {
           }
           if (errors.count(s)) run.error = errors[s] + (run.error.empty() ? "" : "; " + run.error);
           run.out = s->rec.out;
-          rows.push_back(judge(c, exp, rate, cmd_us, run));
+          run.events = s->engine->events();
+          run.t0_us = t0.to_seconds() * 1e6;
+          rows.push_back(judge(c, exp, rate, cmd_us, run, carry_));
+          coverage.add(c, exp, run, rows.back());
           progress(++done, total, c.name + " " + run.engine + " @ " + rate_label(rate) + " pps");
         }
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+        for (std::size_t k = rows.size() - act.size(); k < rows.size(); ++k)
+          rows[k].wall_seconds = wall / double(act.size());
       }
     }
     sc_core::sc_stop();
@@ -136,9 +150,45 @@ class Top : public sc_core::sc_module {
   const std::vector<double>& rates_;
   std::vector<std::unique_ptr<Slot>> slots_;
   sc_core::sc_signal<bool> cmd_{"cmd"};
+  // What the core's programmed output stage carries (the keep-up rule).
+  const double carry_ =
+      core_carry_rate(opt_.core_hz, opt_.timing.len, opt_.timing.space, opt_.timing.setup, opt_.timing.hold);
 };
 
 bool g_ran = false;
+
+// `make coverage`'s merged counts: $CONTOUR_RTL_COVERAGE, else
+// coverage/merged.dat next to this program (build/).
+std::string rtl_coverage_path() {
+  if (const char* env = std::getenv("CONTOUR_RTL_COVERAGE"); env && *env) return env;
+  std::error_code ec;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string() : (self.parent_path() / "coverage" / "merged.dat").string();
+}
+
+// Every rate within 1 .. kMaxRate, and none above what a chosen engine's
+// input can carry (the core's pin); the 8085 engines' rows say NOT RUN.
+void check_rates(const std::vector<double>& rates, const Options& opt) {
+  for (double r : rates) {
+    if (!(r >= 1 && r <= kMaxRate))
+      throw UsageError("--rate " + rate_label(r) + " pps is outside 1 .. " + rate_label(kMaxRate));
+    if (opt.engines.count("core") && r > max_rate("core", opt.core_hz))
+      throw UsageError("--rate " + rate_label(r) + " pps: the core's command pin is sampled at " +
+                       rate_label(opt.core_hz / 1e6) + " MHz, so it carries at most " +
+                       rate_label(max_rate("core", opt.core_hz)) + " pps (leave out the core with --engines)");
+  }
+}
+
+// The report directory, made if missing; a file in its place, or one that
+// cannot be made, is bad input (UsageError).
+void make_report_dir(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw UsageError("--report '" + dir + "' is a file, not a directory");
+  fs::create_directories(dir, ec);
+  if (ec) throw UsageError("--report '" + dir + "': cannot make the directory (" + ec.message() + ")");
+}
 
 }  // namespace
 
@@ -162,11 +212,10 @@ CosimOutcome run_cosim(const Options& opt) {
   const std::vector<double> rates = opt.rates.empty() ? s.rates : opt.rates;
   if (!opt.rates.empty())
     for (auto& c : cases) c.rates = opt.rates;
-  for (double r : rates)
-    if (!(r >= 1 && r <= 50e6)) throw std::invalid_argument("rate " + std::to_string(r) + " pps is outside 1 .. 50M");
+  check_rates(rates, opt);
 
-  std::string dir = opt.report_dir.empty() ? "." : opt.report_dir;
-  if (!opt.report_dir.empty() || opt.trace) std::filesystem::create_directories(dir);
+  const std::string dir = opt.report_dir.empty() ? "." : opt.report_dir;
+  if (!opt.report_dir.empty() || opt.trace) make_report_dir(dir);
   const std::string rom = (std::filesystem::temp_directory_path() /
                            ("contour-cosim-rom-" + std::to_string(::getpid()) + ".memh")).string();
   if (opt.engines.count("cpu")) write_rom_memh(rom);
@@ -194,12 +243,20 @@ CosimOutcome run_cosim(const Options& opt) {
     }
     out.sim_seconds = sc_core::sc_time_stamp().to_seconds();
     out.rows = std::move(top.rows);
+    out.coverage = std::move(top.coverage);
   }
   if (opt.engines.count("cpu")) std::filesystem::remove(rom);
-  for (const auto& r : out.rows) (r.acceptable() ? out.passed : out.failed)++;
+  for (const auto& r : out.rows) {
+    if (r.acceptable()) ++out.passed;
+    else if (r.ran()) ++out.failed;
+    else ++out.not_run;
+  }
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   if (!opt.report_dir.empty()) {
     ReportInput in{s.name, cases, exps, rates, out.rows, opt.command_line, out.sim_seconds, out.wall_seconds, opt};
+    in.traces = out.files;  // only the traces so far
+    in.coverage = &out.coverage;
+    in.rtl_coverage = read_rtl_coverage(rtl_coverage_path());
     for (const auto& f : write_reports(opt.report_dir, in)) out.files.push_back(f);
   }
   return out;

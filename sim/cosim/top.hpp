@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cases.hpp"
+#include "coverage.hpp"
 #include "engines.hpp"
 #include "scoreboard.hpp"
 
@@ -30,10 +31,12 @@ struct Options {
 };
 
 // What one co-simulation gave: `passed` counts the acceptable() rows (PASS
-// or FLAGGED), as the verdict line does.
+// or FLAGGED), as the verdict line does; `not_run` the NOT RUN rows (an
+// engine above its max_rate), which are neither.
 struct CosimOutcome {
   std::vector<Row> rows;
-  std::size_t passed = 0, failed = 0;
+  Coverage coverage;                   // functional coverage of the contract (coverage.hpp)
+  std::size_t passed = 0, failed = 0, not_run = 0;
   double sim_seconds = 0, wall_seconds = 0;
   std::uint64_t core_clocks = 0;
   std::vector<std::string> files;      // written
@@ -41,7 +44,9 @@ struct CosimOutcome {
 };
 
 // Elaborates, simulates and (with report_dir) writes the reports. Throws
-// std::logic_error if called a second time in one process.
+// std::logic_error if called a second time in one process, UsageError
+// (options.hpp) for a rate above the core's pin or a report path that is
+// not a directory.
 CosimOutcome run_cosim(const Options& opt);
 
 }  // namespace contour::cosim
