@@ -102,7 +102,8 @@ expect_error "does not combine" "$work/line.ngc" --pulses --csv "$work/x.csv"
 expect_error "unknown option '--bogus'" "$work/line.ngc" --bogus
 expect_error "'$work' is a directory, not a file" "$work"
 expect_error "--config: '$work' is a directory" "$work/line.ngc" --config "$work"
-expect_error "--cycle: at most 1000 ms" "$work/line.ngc" --cycle 1e9
+expect_error "--cycle: at most 1000 ms" "$work/line.ngc" --cycle 1000000000
+expect_error "--cycle: '1e9' is not a number" "$work/line.ngc" --cycle 1e9
 expect_error "--blend-tol: must be >= 0" "$work/line.ngc" --blend-tol -1
 printf 'T1 P1 Z1\nT1 P2 Z2\n' > "$work/twice.tbl"
 expect_error "--tool-table: $work/twice.tbl: line 2, column 1: tool table: tool 1 is listed twice" "$work/line.ngc" --tool-table "$work/twice.tbl"
