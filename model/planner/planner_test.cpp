@@ -75,7 +75,7 @@ TEST(ChordPlacement, PaperBFigure1Geometry) {
   th = chord_angle(ChordMethod::InsideOutside, R, e);
   EXPECT_NEAR((R + e) * std::cos(th / 2), R - e, 1e-12);
   EXPECT_NEAR(chord_length(ChordMethod::InsideOutside, R, e), 2 * (R + e) * std::sin(th / 2), 1e-10);
-  EXPECT_NEAR(chord_length(ChordMethod::InsideOutside, R, e), 0.12649, 1e-5);  // PAPERS.md: 0.1265 mm
+  EXPECT_NEAR(chord_length(ChordMethod::InsideOutside, R, e), 0.12649, 1e-5);  // paper B (docs/papers.md): 0.1265 mm
   EXPECT_GT(chord_length(ChordMethod::InsideOutside, R, e), chord_length(ChordMethod::Outside, R, e));
   EXPECT_GT(chord_length(ChordMethod::Outside, R, e), chord_length(ChordMethod::Inside, R, e));
   EXPECT_GT(chord_angle(ChordMethod::Inside, R, e), chord_angle(ChordMethod::Outside, R, e));
