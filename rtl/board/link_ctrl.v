@@ -83,8 +83,7 @@ module link_ctrl #(
   wire op_wr = i_rd_data[7];
 
   assign o_busy = (state_q != S_IDLE);
-  assign o_rd_addr = {bank_q, idx_q[6:0]};
-  wire unused_idx = idx_q[7];
+  assign o_rd_addr = (bank_q ? MAX[7:0] : 8'd0) + idx_q;  // bank * MAX + index
 
   // Reply byte of the header and the trailer.
   reg [7:0] head_byte, trail_byte;
