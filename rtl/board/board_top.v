@@ -13,7 +13,7 @@
 module board_top #(
     parameter integer CLKS_PER_BIT = 12,  // clock / baud rate (12: 1 Mbaud at 12 MHz)
     parameter integer W = 24,             // coordinate width of both cores
-    parameter integer QAW = 5             // log2 of the chord queue depth
+    parameter integer QAW = 7             // log2 of the chord queue depth (128 + 1 chords: 129 ms at 1 ms)
 ) (
     input  wire       i_clk,
     input  wire       i_rst,

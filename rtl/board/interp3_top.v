@@ -228,8 +228,8 @@ module interp3_top #(
       nxt_q <= 16'd0;
     end else begin
       if (boundary) due_q <= q_valid;
-      if (to_next) nxt_q <= nxt_q + {15'd0, tick};
-      else owed_q <= owed_q + {15'd0, tick} - {15'd0, cmd};
+      nxt_q <= nxt_q + {15'd0, tick & to_next};
+      owed_q <= owed_q + {15'd0, tick & ~to_next} - {15'd0, cmd};
       if (finished && !boundary) loaded_q <= 1'b0;
     end
   end

@@ -81,7 +81,9 @@ TEST(BoardChords, RandomChordsGiveTheModelsPulsesOnTime) {
 
 TEST(BoardChords, WideChordsGoThroughTheStagedRegisters) {
   std::vector<Chord3> chords{{600, -5, 0}, {-700, 2, 1}, {0, 0, 0}, {3, 4, -900}, {1, 1, 1}};
-  const Outcome o = run_stream(chords);
+  StreamConfig cfg;
+  cfg.step_len = cfg.step_space = 1;  // up to 3000 steps per 1 ms cycle
+  const Outcome o = run_stream(chords, {}, cfg);
   expect_model_pulses(o, chords);
 }
 

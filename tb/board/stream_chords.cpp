@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -76,11 +77,11 @@ void post_chords(Run& r, Transport& t) {
     ops.push_back(wr(BOARD_AXIS3_CTRL, kRun));
     r.running = true;
   }
+  if (ops.empty()) return;
   if (t.now_s() - r.last_prog >= r.cfg.progress_s && request_size(ops) + 3 <= BOARD_MAX_FRAME) {
     ops.insert(ops.end(), {rd(BOARD_AXIS3_POS_X), rd(BOARD_AXIS3_POS_Y), rd(BOARD_AXIS3_POS_Z)});
     r.last_prog = t.now_s();
   }
-  if (ops.empty()) return;
   r.link.post(ops, k);
   r.last_post = t.now_s();
 }

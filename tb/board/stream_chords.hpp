@@ -27,7 +27,7 @@ struct StreamConfig {
   double cycle_s = 1e-3;              // the control cycle of the chords
   std::uint32_t step_len = 12;        // STEP high, clocks (1 us)
   std::uint32_t step_space = 12;      // STEP low between steps, clocks
-  std::uint32_t wdog_clocks = 1200000;  // 100 ms
+  std::uint32_t wdog_clocks = 600000;  // 50 ms
   std::size_t chords_per_frame = 11;  // fits MAX_FRAME with packed chords
   double progress_s = 0.05;           // position readback interval (transport clock)
 };
