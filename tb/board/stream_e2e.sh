@@ -6,6 +6,8 @@
 #   - the board's STEP/DIR pins gave exactly the model's pulses, in order;
 #   - the position the host read back equals the net of the model's pulses;
 #   - stream exited 0.
+# (stream gets --timeout 60: the simulated board runs ~10x slower than a
+# real one, so a cut of 0.2 s on its wire lasts seconds of the host's time.)
 # usage: stream_e2e.sh CONTOUR PROGRAM WORKDIR [board-sim options: faults]
 set -euo pipefail
 contour=$1 prog=$2 work=$3
@@ -17,7 +19,7 @@ trap 'kill $sim 2>/dev/null || true' EXIT
 for _ in $(seq 200); do [ -s "$work/port" ] && break; sleep 0.05; done
 [ -s "$work/port" ] || { echo "board-sim printed no port"; exit 1; }
 rc=0
-timeout 600 "$contour" stream "$prog" --port "$(cat "$work/port")" --quiet >"$work/stream.log" 2>&1 || rc=$?
+timeout 600 "$contour" stream "$prog" --port "$(cat "$work/port")" --quiet --timeout 60 >"$work/stream.log" 2>&1 || rc=$?
 wait $sim
 trap - EXIT
 cat "$work/stream.log" "$work/sim.log"
