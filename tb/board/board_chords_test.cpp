@@ -135,3 +135,49 @@ TEST(BoardChords, WatchdogStopsAlongThePathAndResumes) {
 
 }  // namespace
 }  // namespace contour::board
+
+namespace contour::board {
+namespace {
+
+// The link's figures for docs/board.md, in simulated time (deterministic):
+//   build/tb/board/board_rtl_test --gtest_filter='BoardLink.*'
+// Throughput: chords on a cycle shorter than the link can feed (20 us),
+// so the link is the bottleneck: chords loaded per simulated second.
+TEST(BoardLink, ThroughputInChordsPerSecond) {
+  const std::vector<Chord3> chords(2000, Chord3{1, -1, 1});
+  StreamConfig cfg;
+  cfg.cycle_s = 20e-6;
+  cfg.step_len = cfg.step_space = 1;
+  BoardSim sim;
+  SimTransport t(sim);
+  LinkClient link(t);
+  const StreamResult r = stream_chords(link, t, chords, cfg);
+  ASSERT_EQ(sim.steps().size(), 3 * chords.size());
+  const double span = static_cast<double>(sim.steps().back().clock - sim.steps().front().clock) / kClockHz;
+  const double rate = static_cast<double>(chords.size()) / span;
+  std::printf("link: %.0f chords/s at 1 Mbaud (%zu chords in %.4f s, %llu frames)\n", rate, chords.size(), span,
+              static_cast<unsigned long long>(r.link.frames));
+  EXPECT_GT(rate, 1000.0);  // the 1 ms cycle needs 1000
+}
+
+// Latency: from the first start bit of a frame that queues one chord and
+// sets RUN to the first STEP edge (the chord of 461 steps: its first
+// command 25 clocks after the boundary).
+TEST(BoardLink, LatencyFromAFrameToTheFirstStep) {
+  BoardSim sim;
+  SimTransport t(sim);
+  LinkClient link(t);
+  link.sync(BOARD_LINK_ID);
+  link.transact({Op{true, BOARD_AXIS3_CH_X, 461}});
+  const std::uint64_t c0 = sim.clocks();
+  sim.send(make_request(1, {Op{true, BOARD_AXIS3_PUSH, 0}, Op{true, BOARD_AXIS3_CTRL, 1}}));
+  while (sim.steps().empty() && sim.clocks() - c0 < 120000) sim.run(1);
+  ASSERT_FALSE(sim.steps().empty());
+  const double us = static_cast<double>(sim.steps().front().clock - c0) / kClockHz * 1e6;
+  std::printf("link: %.2f us from a frame's first bit to the first step (frame of %zu characters)\n", us,
+              make_request(1, {Op{true, BOARD_AXIS3_PUSH, 0}, Op{true, BOARD_AXIS3_CTRL, 1}}).size());
+  EXPECT_LT(us, 1000.0);  // well inside one cycle
+}
+
+}  // namespace
+}  // namespace contour::board
