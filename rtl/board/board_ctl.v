@@ -46,11 +46,13 @@ module board_ctl (
   wire [1:0] unused_adr = i_wb_adr[1:0];
 
   reg enable_q, pins_q, hold_q;
-  reg [31:0] wdog_q, ramp_q, frames_q, refused_q;
-  reg [31:0] quiet_q;  // clocks since the last frame done
+  reg [23:0] wdog_q;
+  reg [15:0] ramp_q;
+  reg [31:0] frames_q, refused_q;
+  reg [23:0] quiet_q;  // clocks since the last frame done (saturating)
   reg armed_q;
   reg [16:0] scale_q;
-  reg [31:0] tick_q;   // clocks to the next scale step
+  reg [15:0] tick_q;   // clocks since the last scale step
   reg [15:0] phase_q;
 
   assign o_hold = hold_q | o_wdog;
@@ -70,8 +72,8 @@ module board_ctl (
       enable_q <= R_LINK_CTRL[LINK_CTRL_ENABLE];
       pins_q <= R_LINK_CTRL[LINK_CTRL_PINS];
       hold_q <= R_LINK_CTRL[LINK_CTRL_HOLD];
-      wdog_q <= R_LINK_WDOG;
-      ramp_q <= R_LINK_RAMP;
+      wdog_q <= R_LINK_WDOG[23:0];
+      ramp_q <= R_LINK_RAMP[15:0];
     end else if (wr) begin
       case (adr)
         A_LINK_CTRL: begin
@@ -79,8 +81,8 @@ module board_ctl (
           pins_q <= i_wb_dat[LINK_CTRL_PINS];
           hold_q <= i_wb_dat[LINK_CTRL_HOLD];
         end
-        A_LINK_WDOG: wdog_q <= i_wb_dat;
-        A_LINK_RAMP: ramp_q <= i_wb_dat;
+        A_LINK_WDOG: wdog_q <= i_wb_dat[23:0];
+        A_LINK_RAMP: ramp_q <= i_wb_dat[15:0];
         default: ;
       endcase
     end
@@ -91,15 +93,15 @@ module board_ctl (
   // Watchdog.
   always @(posedge i_clk) begin
     if (i_rst) begin
-      quiet_q <= 32'd0;
+      quiet_q <= 24'd0;
       armed_q <= 1'b0;
       o_wdog <= 1'b0;
     end else begin
-      if (i_frame_ok || resume) quiet_q <= 32'd0;
-      else if (quiet_q != 32'hFFFF_FFFF) quiet_q <= quiet_q + 32'd1;
+      if (i_frame_ok || resume) quiet_q <= 24'd0;
+      else if (quiet_q != 24'hFF_FFFF) quiet_q <= quiet_q + 24'd1;
       if (i_frame_ok) armed_q <= 1'b1;
       if (resume) o_wdog <= 1'b0;
-      else if (armed_q && wdog_q != 32'd0 && quiet_q >= wdog_q) o_wdog <= 1'b1;
+      else if (armed_q && wdog_q != 24'd0 && quiet_q >= wdog_q) o_wdog <= 1'b1;
     end
   end
 
@@ -107,11 +109,11 @@ module board_ctl (
   always @(posedge i_clk) begin
     if (i_rst) begin
       scale_q <= 17'h10000;
-      tick_q <= 32'd0;
-    end else if (tick_q + 32'd1 < ramp_q) begin
-      tick_q <= tick_q + 32'd1;
+      tick_q <= 16'd0;
+    end else if ({1'b0, tick_q} + 17'd1 < {1'b0, ramp_q}) begin
+      tick_q <= tick_q + 16'd1;
     end else begin
-      tick_q <= 32'd0;
+      tick_q <= 16'd0;
       if (o_hold && scale_q != 17'd0) scale_q <= scale_q - 17'd1;
       else if (!o_hold && scale_q != 17'h10000) scale_q <= scale_q + 17'd1;
     end
@@ -152,8 +154,8 @@ module board_ctl (
           o_wb_dat[LINK_STATUS_STOPPED] <= o_stopped;
           o_wb_dat[LINK_STATUS_WDOG] <= o_wdog;
         end
-        A_LINK_WDOG: o_wb_dat <= wdog_q;
-        A_LINK_RAMP: o_wb_dat <= ramp_q;
+        A_LINK_WDOG: o_wb_dat[23:0] <= wdog_q;
+        A_LINK_RAMP: o_wb_dat[15:0] <= ramp_q;
         A_LINK_SCALE: o_wb_dat <= {15'd0, scale_q};
         A_LINK_FRAMES: o_wb_dat <= frames_q;
         A_LINK_REFUSED: o_wb_dat <= refused_q;

@@ -12,7 +12,8 @@
 
 module board_top #(
     parameter integer CLKS_PER_BIT = 12,  // clock / baud rate (12: 1 Mbaud at 12 MHz)
-    parameter integer W = 24,             // coordinate width of both cores
+    parameter integer W = 16,             // coordinate width of interp_top (16 fits the UP5K)
+    parameter integer W3 = 16,            // chord magnitude width of interp3_top
     parameter integer QAW = 7             // log2 of the chord queue depth (128 + 1 chords: 129 ms at 1 ms)
 ) (
     input  wire       i_clk,
@@ -103,7 +104,7 @@ module board_top #(
   );
 
   wire a_step_x, a_dir_x, a_step_y, a_dir_y, a_step_z, a_dir_z, unused_a_busy;
-  interp3_top #(.W(W), .QAW(QAW)) u_axis3 (
+  interp3_top #(.W(W3), .QAW(QAW)) u_axis3 (
       .i_clk(i_clk), .i_rst(i_rst), .i_ce(ce), .i_wb_cyc(m_cyc & sel_3), .i_wb_stb(m_cyc & sel_3),
       .i_wb_we(m_we), .i_wb_adr(s_adr), .i_wb_dat(m_dat_w), .o_wb_dat(dat_3), .o_wb_ack(ack_3),
       .o_step_x(a_step_x), .o_dir_x(a_dir_x), .o_step_y(a_step_y), .o_dir_y(a_dir_y),

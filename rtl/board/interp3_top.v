@@ -49,7 +49,8 @@ module interp3_top #(
 
   localparam integer QDEPTH = (1 << QAW) + 1;  // the memory and its output register
   localparam [7:0] QDEPTH8 = QDEPTH[7:0];
-  localparam integer QW = 3 * (W + 1);  // a queued chord: {zneg, |Z|, yneg, |Y|, xneg, |X|}
+  localparam integer QW = 3 * (W + 1);
+  localparam integer DW = (W + 2 > 16 ? W + 2 : 16) + 1;  // DDA: N + an accumulator below CYCLE  // a queued chord: {zneg, |Z|, yneg, |Y|, xneg, |X|}
 
   // ------------------------------------------------------------ registers
   wire acc = i_wb_cyc & i_wb_stb & ~o_wb_ack;
@@ -58,7 +59,9 @@ module interp3_top #(
   wire [1:0] unused_adr = i_wb_adr[1:0];
 
   reg run_q, drain_q, reject_q, underrun_q;
-  reg [31:0] cycle_q, chx_q, chy_q, chz_q, chords_q, underruns_q;
+  reg [15:0] cycle_q;
+  reg [W:0] chx_q, chy_q, chz_q;  // staged chord: sign and W bits of two's complement
+  reg [31:0] chords_q, underruns_q;
   reg [15:0] len_q, space_q;
   wire q_full, q_valid;
   wire [QW-1:0] q_data;
@@ -95,25 +98,25 @@ module interp3_top #(
   wire unused_c = ^{cx[30:W], cy[30:W], cz[30:W]};
   wire [QW-1:0] q_in = (adr == A_AXIS3_CHORD)
       ? {sm(cz[31], cz[W-1:0]), sm(cy[31], cy[W-1:0]), sm(cx[31], cx[W-1:0])}
-      : {sm(chz_q[31], chz_q[W-1:0]), sm(chy_q[31], chy_q[W-1:0]), sm(chx_q[31], chx_q[W-1:0])};
+      : {sm(chz_q[W], chz_q[W-1:0]), sm(chy_q[W], chy_q[W-1:0]), sm(chx_q[W], chx_q[W-1:0])};
 
   // Writable registers.
   always @(posedge i_clk) begin
     if (i_rst) begin
-      cycle_q <= R_AXIS3_CYCLE;
+      cycle_q <= R_AXIS3_CYCLE[15:0];
       len_q <= R_AXIS3_STEP_LEN[15:0];
       space_q <= R_AXIS3_STEP_SPACE[15:0];
-      chx_q <= R_AXIS3_CH_X;
-      chy_q <= R_AXIS3_CH_Y;
-      chz_q <= R_AXIS3_CH_Z;
+      chx_q <= {(W+1){1'b0}};
+      chy_q <= {(W+1){1'b0}};
+      chz_q <= {(W+1){1'b0}};
     end else if (wr) begin
       case (adr)
-        A_AXIS3_CYCLE: cycle_q <= (i_wb_dat == 32'd0) ? 32'd1 : i_wb_dat;
+        A_AXIS3_CYCLE: cycle_q <= (i_wb_dat[15:0] == 16'd0) ? 16'd1 : i_wb_dat[15:0];
         A_AXIS3_STEP_LEN: len_q <= i_wb_dat[15:0];
         A_AXIS3_STEP_SPACE: space_q <= i_wb_dat[15:0];
-        A_AXIS3_CH_X: chx_q <= i_wb_dat;
-        A_AXIS3_CH_Y: chy_q <= i_wb_dat;
-        A_AXIS3_CH_Z: chz_q <= i_wb_dat;
+        A_AXIS3_CH_X: chx_q <= {i_wb_dat[31], i_wb_dat[W-1:0]};
+        A_AXIS3_CH_Y: chy_q <= {i_wb_dat[31], i_wb_dat[W-1:0]};
+        A_AXIS3_CH_Z: chz_q <= {i_wb_dat[31], i_wb_dat[W-1:0]};
         default: ;
       endcase
     end
@@ -126,10 +129,10 @@ module interp3_top #(
   end
 
   // ------------------------------------------------------------ sequencer
-  reg [31:0] cyc_q;       // time-scaled clocks into the cycle
+  reg [15:0] cyc_q;       // time-scaled clocks into the cycle
   reg due_q;              // the chord of the last boundary is not loaded yet
   reg loaded_q;           // a chord is in the core
-  reg [31:0] dda_q;       // DDA accumulator of the cycle's chord, < CYCLE
+  reg [DW-1:0] dda_q;     // DDA accumulator of the cycle's chord, < CYCLE
   reg [W+1:0] rem_q;      // DDA commands still to come in this cycle
   reg [W+1:0] n_q;        // the cycle's chord's N
   reg [15:0] owed_q;      // commands due to the loaded chord, not yet given
@@ -144,16 +147,17 @@ module interp3_top #(
   wire [W+1:0] n_head = {2'b00, q_data[W-1:0]} + {2'b00, q_data[2*W:W+1]} + {2'b00, q_data[3*W+1:2*W+2]};
   // A boundary: the grid's first time-scaled clock of a cycle, unless the
   // last boundary's chord is still not loaded (then the cycle stretches).
-  wire boundary = i_ce && run_q && cyc_q == 32'd0 && !due_q;
+  wire boundary = i_ce && run_q && cyc_q == 16'd0 && !due_q;
   wire out_idle = out_q == 2'd0 && !strobe && !cmd_q;
   wire finished = core_done && owed_q == 16'd0 && out_idle;
   wire pop = due_q && finished;            // load the due chord
   // The DDA: the boundary restarts it with the head's N (command j of N at
   // the ceil(j * CYCLE / N) - 1'th time-scaled clock from the boundary).
   wire [W+1:0] n_now = boundary ? n_head : n_q;
-  wire [31:0] dda_sum = (boundary ? 32'd0 : dda_q) + {{(30-W){1'b0}}, n_now};
+  wire [DW-1:0] dda_sum = (boundary ? {DW{1'b0}} : dda_q) + {{(DW-W-2){1'b0}}, n_now};
+  wire [DW-1:0] cycle_w = {{(DW-16){1'b0}}, cycle_q};
   wire dda_on = boundary ? q_valid : (i_ce && rem_q != 0);
-  wire tick = dda_on && dda_sum >= cycle_q;
+  wire tick = dda_on && dda_sum >= cycle_w;
   wire to_next = boundary || due_q;        // the tick belongs to the chord not yet loaded
   wire cmd = loaded_q && !pop && owed_q != 16'd0 && out_idle;
 
@@ -164,9 +168,9 @@ module interp3_top #(
 
   // Cycle counter.
   always @(posedge i_clk) begin
-    if (i_rst || abort) cyc_q <= 32'd0;
-    else if (i_ce && (cyc_q != 32'd0 || boundary))
-      cyc_q <= (cyc_q + 32'd1 >= cycle_q) ? 32'd0 : cyc_q + 32'd1;
+    if (i_rst || abort) cyc_q <= 16'd0;
+    else if (i_ce && (cyc_q != 16'd0 || boundary))
+      cyc_q <= ({1'b0, cyc_q} + 17'd1 >= {1'b0, cycle_q}) ? 16'd0 : cyc_q + 16'd1;
   end
 
   // RUN and DRAIN; underruns: decided at each boundary.
@@ -201,15 +205,15 @@ module interp3_top #(
   // The DDA of the cycle's chord.
   always @(posedge i_clk) begin
     if (i_rst || abort) begin
-      dda_q <= 32'd0;
+      dda_q <= {DW{1'b0}};
       rem_q <= {(W+2){1'b0}};
       n_q <= {(W+2){1'b0}};
     end else if (boundary) begin
       n_q <= q_valid ? n_head : {(W+2){1'b0}};
       rem_q <= q_valid ? n_head - {{(W+1){1'b0}}, tick} : {(W+2){1'b0}};
-      dda_q <= q_valid ? (tick ? dda_sum - cycle_q : dda_sum) : 32'd0;
+      dda_q <= q_valid ? (tick ? dda_sum - cycle_w : dda_sum) : {DW{1'b0}};
     end else if (dda_on) begin
-      dda_q <= tick ? dda_sum - cycle_q : dda_sum;
+      dda_q <= tick ? dda_sum - cycle_w : dda_sum;
       rem_q <= rem_q - {{(W+1){1'b0}}, tick};
     end
   end
@@ -312,12 +316,12 @@ module interp3_top #(
           o_wb_dat[AXIS3_STATUS_RUN] <= run_q;
           o_wb_dat[AXIS3_STATUS_LEVEL +: QAW+2] <= q_level;
         end
-        A_AXIS3_CYCLE: o_wb_dat <= cycle_q;
+        A_AXIS3_CYCLE: o_wb_dat[15:0] <= cycle_q;
         A_AXIS3_STEP_LEN: o_wb_dat[15:0] <= len_q;
         A_AXIS3_STEP_SPACE: o_wb_dat[15:0] <= space_q;
-        A_AXIS3_CH_X: o_wb_dat <= chx_q;
-        A_AXIS3_CH_Y: o_wb_dat <= chy_q;
-        A_AXIS3_CH_Z: o_wb_dat <= chz_q;
+        A_AXIS3_CH_X: o_wb_dat <= {{(32-W){chx_q[W]}}, chx_q[W-1:0]};
+        A_AXIS3_CH_Y: o_wb_dat <= {{(32-W){chy_q[W]}}, chy_q[W-1:0]};
+        A_AXIS3_CH_Z: o_wb_dat <= {{(32-W){chz_q[W]}}, chz_q[W-1:0]};
         A_AXIS3_POS_X: o_wb_dat <= pos_x;
         A_AXIS3_POS_Y: o_wb_dat <= pos_y;
         A_AXIS3_POS_Z: o_wb_dat <= pos_z;

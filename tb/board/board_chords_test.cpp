@@ -87,6 +87,16 @@ TEST(BoardChords, WideChordsGoThroughTheStagedRegisters) {
   expect_model_pulses(o, chords);
 }
 
+TEST(BoardChords, AChordBeyondTheBoardsWidthIsRefusedBeforeAnyMoves) {
+  // W = 16 on the board: 65535 steps per axis and chord at most.
+  try {
+    run_stream({{1, 1, 1}, {0, 65536, 0}});
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("chord 1 (0, 65536, 0)"), std::string::npos) << e.what();
+  }
+}
+
 TEST(BoardChords, FlippedBitsAndDroppedBytesAreMendedByResends) {
   const auto chords = random_chords(150, 40, 2);
   Faults f;

@@ -63,11 +63,11 @@ TEST(BoardFrames, WritesInOrderAndAdvancesTheSequence) {
   ASSERT_EQ(r.data.size(), 1u);
   EXPECT_EQ(r.data[0], 1234u);
   EXPECT_EQ(r.next_seq, 1);
-  // Data bytes equal to END and ESC travel escaped.
-  r = ask(sim, 1, {Op{true, BOARD_AXIS3_CH_X, 0xC0DBC0DBu}, Op{false, BOARD_AXIS3_CH_X, 0}});
+  // Data bytes equal to END and ESC travel escaped (a chord of -16165 steps).
+  r = ask(sim, 1, {Op{true, BOARD_AXIS3_CH_X, 0xFFFFC0DBu}, Op{false, BOARD_AXIS3_CH_X, 0}});
   EXPECT_EQ(r.status, BOARD_ERR_OK);
   ASSERT_EQ(r.data.size(), 1u);
-  EXPECT_EQ(r.data[0], 0xC0DBC0DBu);
+  EXPECT_EQ(r.data[0], 0xFFFFC0DBu);
 }
 
 TEST(BoardFrames, BadCrcIsRefusedAndWritesNothing) {

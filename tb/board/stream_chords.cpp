@@ -26,14 +26,14 @@ std::array<std::int64_t, 3> read_positions(LinkClient& link) {
 
 // The ops that queue one chord: the packed word if it fits, else the
 // staged registers and PUSH. Throws for a chord the board cannot give.
-std::vector<Op> chord_ops(const Chord3& c, std::size_t k, const StreamConfig& cfg) {
-  const std::int64_t lim = (std::int64_t{1} << 24) - 1;
+std::vector<Op> chord_ops(const Chord3& c, std::size_t k, const StreamConfig& cfg, unsigned width) {
+  const std::int64_t lim = (std::int64_t{1} << width) - 1;
   auto where = [&] {
     return "chord " + std::to_string(k) + " (" + std::to_string(c.dx) + ", " + std::to_string(c.dy) + ", " +
            std::to_string(c.dz) + ")";
   };
   if (std::llabs(c.dx) > lim || std::llabs(c.dy) > lim || std::llabs(c.dz) > lim)
-    throw std::invalid_argument(where() + ": an axis beyond 2^24 - 1 steps");
+    throw std::invalid_argument(where() + ": an axis beyond the board's 2^" + std::to_string(width) + " - 1 steps");
   const double cycle_clk = cfg.cycle_s * cfg.clock_hz;
   const double per_step = std::max(cfg.step_len, 1u) + std::max(cfg.step_space, 1u) + 2.0;
   const auto most = static_cast<std::int64_t>(cycle_clk / per_step);
@@ -52,6 +52,7 @@ struct Run {
   const std::vector<Chord3>& chords;
   const StreamConfig& cfg;
   std::size_t depth = 0, next = 0;
+  unsigned width = 0;  // the board's chord magnitude width
   bool running = false, wdog_seen = false, resume_posted = false;
   double last_post = 0, last_prog = -1;
   Progress prog;
@@ -65,7 +66,7 @@ void post_chords(Run& r, Transport& t) {
   std::vector<Op> ops;
   std::size_t k = 0;
   while (r.next < r.chords.size() && k < cap && k < r.cfg.chords_per_frame) {
-    std::vector<Op> c = chord_ops(r.chords[r.next], r.next, r.cfg);
+    std::vector<Op> c = chord_ops(r.chords[r.next], r.next, r.cfg, r.width);
     std::vector<Op> trial = ops;
     trial.insert(trial.end(), c.begin(), c.end());
     if (request_size(trial) + 5 + 3 > BOARD_MAX_FRAME) break;  // room for CTRL and 3 reads
@@ -146,10 +147,11 @@ StreamResult stream_chords(LinkClient& link, Transport& t, const std::vector<Cho
                            const StreamConfig& cfg, const std::function<void(const Progress&)>& progress,
                            const std::atomic<bool>* stop) {
   Run r{link, chords, cfg};
-  for (std::size_t k = 0; k < chords.size(); ++k) chord_ops(chords[k], k, cfg);  // refuse before moving
   check_board(link);
   const std::uint32_t params = read_word(link, BOARD_AXIS3_PARAMS);
   r.depth = (params & BOARD_AXIS3_PARAMS_QDEPTH_MASK) >> BOARD_AXIS3_PARAMS_QDEPTH_LSB;
+  r.width = (params & BOARD_AXIS3_PARAMS_W_MASK) >> BOARD_AXIS3_PARAMS_W_LSB;
+  for (std::size_t k = 0; k < chords.size(); ++k) chord_ops(chords[k], k, cfg, r.width);  // refuse before moving
   link.transact({wr(BOARD_AXIS3_CTRL, (1u << BOARD_AXIS3_CTRL_ABORT_LSB) | (1u << BOARD_AXIS3_CTRL_CLEAR_LSB)),
                  wr(BOARD_AXIS3_CYCLE, static_cast<std::uint32_t>(std::lround(cfg.cycle_s * cfg.clock_hz))),
                  wr(BOARD_AXIS3_STEP_LEN, cfg.step_len), wr(BOARD_AXIS3_STEP_SPACE, cfg.step_space),
