@@ -13,7 +13,7 @@
 module board_top #(
     parameter integer CLKS_PER_BIT = 12,  // clock / baud rate (12: 1 Mbaud at 12 MHz)
     parameter integer W = 16,             // coordinate width of interp_top (16 fits the UP5K)
-    parameter integer W3 = 16,            // chord magnitude width of interp3_top
+    parameter integer W3 = 12,            // chord magnitude width of interp3_top (4095 steps: more than a cycle gives)
     parameter integer QAW = 7             // log2 of the chord queue depth (128 + 1 chords: 129 ms at 1 ms)
 ) (
     input  wire       i_clk,

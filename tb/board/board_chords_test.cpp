@@ -88,7 +88,7 @@ TEST(BoardChords, WideChordsGoThroughTheStagedRegisters) {
 }
 
 TEST(BoardChords, AChordBeyondTheBoardsWidthIsRefusedBeforeAnyMoves) {
-  // W = 16 on the board: 65535 steps per axis and chord at most.
+  // W = 12 on the board: 4095 steps per axis and chord at most.
   try {
     run_stream({{1, 1, 1}, {0, 65536, 0}});
     ADD_FAILURE() << "no error";

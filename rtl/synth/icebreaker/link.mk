@@ -15,7 +15,7 @@ link-bitstream: $(LINK_DIR)/link.bin
 $(LINK_DIR)/netlist.json: $(LINK_V)
 	@mkdir -p $(@D)
 	@echo "synth: yosys icebreaker_link"
-	@$(YOSYS) -q -l $(@D)/yosys.log -p "read_verilog $(LINK_INC) $(LINK_V); synth_ice40 -top link_top -json $@"
+	@$(YOSYS) -q -l $(@D)/yosys.log -p "read_verilog $(LINK_INC) $(LINK_V); synth_ice40 -abc9 -top link_top -json $@"
 
 $(LINK_DIR)/report.json: $(LINK_DIR)/netlist.json icebreaker/link.pcf
 	@echo "synth: nextpnr-ice40 --up5k icebreaker_link"
