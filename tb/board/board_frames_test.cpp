@@ -63,11 +63,13 @@ TEST(BoardFrames, WritesInOrderAndAdvancesTheSequence) {
   ASSERT_EQ(r.data.size(), 1u);
   EXPECT_EQ(r.data[0], 1234u);
   EXPECT_EQ(r.next_seq, 1);
-  // Data bytes equal to END and ESC travel escaped (a chord of -16165 steps).
-  r = ask(sim, 1, {Op{true, BOARD_AXIS3_CH_X, 0xFFFFC0DBu}, Op{false, BOARD_AXIS3_CH_X, 0}});
+  // Data bytes equal to END and ESC travel escaped (chords of -3904 and -3877 steps).
+  r = ask(sim, 1, {Op{true, BOARD_AXIS3_CH_X, 0xFFFFF0C0u}, Op{true, BOARD_AXIS3_CH_Y, 0xFFFFF0DBu},
+                   Op{false, BOARD_AXIS3_CH_X, 0}, Op{false, BOARD_AXIS3_CH_Y, 0}});
   EXPECT_EQ(r.status, BOARD_ERR_OK);
-  ASSERT_EQ(r.data.size(), 1u);
-  EXPECT_EQ(r.data[0], 0xFFFFC0DBu);
+  ASSERT_EQ(r.data.size(), 2u);
+  EXPECT_EQ(r.data[0], 0xFFFFF0C0u);
+  EXPECT_EQ(r.data[1], 0xFFFFF0DBu);
 }
 
 TEST(BoardFrames, BadCrcIsRefusedAndWritesNothing) {
