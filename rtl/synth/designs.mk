@@ -27,3 +27,6 @@ $(foreach dev,hx8k up5k,$(foreach d,CORE TOP DP,\
 $(eval $(call design,interp3_hx8k,interp3/interp3.f,INTERP3,hx8k,))
 $(foreach dev,hx8k up5k,$(eval $(call design,cpu8085_$(dev),cpu8085/cpu8085.f,CPU8085,$(dev),)))
 $(foreach dev,hx8k up5k,$(eval $(call design,board8085_$(dev),board8085/board8085.f,BOARD8085,$(dev),)))
+
+# The board with the host link: its iCEBreaker bitstream (icebreaker/link.mk).
+include icebreaker/link.mk

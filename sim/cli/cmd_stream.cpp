@@ -1,0 +1,162 @@
+// `contour stream FILE --port DEVICE`: reads and plans a G-code program
+// (model/gcode, model/planner: paper B) and streams its 1 ms chords over
+// the serial link to the board's 3-axis peripheral (docs/board.md).
+#if __has_include("stream_chords.hpp")
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "args.hpp"
+#include "gcode/gcode.hpp"
+#include "planner/planner.hpp"
+#include "planner/two_stage.hpp"
+#include "registry.hpp"
+#include "serial_port.hpp"
+#include "stream_chords.hpp"
+
+namespace contour::cli {
+namespace {
+
+const char* kHelp =
+    "usage: contour stream FILE.ngc --port DEVICE [options]\n"
+    "Reads a G-code program (G0-G3, G17-G19, G20/G21, G90/G91; 3D arcs as paper B), plans it\n"
+    "with paper B's acc/dec planner and streams its chords, one per 1 ms control cycle, to\n"
+    "the board's 3-axis chord peripheral over the serial link (rtl/board, docs/board.md),\n"
+    "keeping the board's chord queue filled. Each chord is rounded to steps on the board's\n"
+    "grid, so the board's STEP/DIR pins give the pulses of `contour gcode FILE --pulses`.\n"
+    "\n"
+    "  DEVICE  the iCEBreaker's second FTDI channel (e.g. /dev/ttyUSB1), or the pseudo-\n"
+    "          terminal printed by `contour board-sim` (the simulated board)\n"
+    "\noptions:\n"
+    "  --baud N          line rate (default 1000000, the bitstream's)\n"
+    "  --steps-per-mm N  steps per mm on every axis (default 1000)\n"
+    "  --accel A         acceleration limit of every axis, mm/min^2 (default 3528000 = 0.1 g)\n"
+    "  --cycle MS        control cycle, ms (default 1)\n"
+    "  --step-len US     STEP high time, us (default 1)\n"
+    "  --step-space US   least STEP low time, us (default 1)\n"
+    "  --watchdog MS     board's hold after this long without a frame (default 50)\n"
+    "  --timeout S       give up when the board has not answered for S seconds (default 3)\n"
+    "  --quiet           no progress line\n"
+    "  --hw-arcs         paper A mode (lines and arcs as hardware blocks): NOT DONE yet\n"
+    "While it runs: a progress line on a terminal (chords sent, position read back, queue).\n"
+    "Ctrl-C: feed hold (the board slows to rest along the path), then stop (queue dropped).\n"
+    "A frame the board refuses (CRC, sequence) or loses is sent again; a tripped watchdog\n"
+    "is reported and resumed.\n"
+    "Exit status: 0 done, the position read back equals the program's; 1 it does not;\n"
+    "2 bad input, the board does not answer or answers with an error (one line on stderr);\n"
+    "130 stopped by Ctrl-C.\n";
+
+std::atomic<bool> g_stop{false};
+extern "C" void on_sigint(int) { g_stop = true; }
+
+double positive(const Args& a, const char* name, const char* fallback) {
+  const std::string v = a.option_or(name, fallback);
+  const double x = parse_real(v, std::string("--") + name);
+  if (!(x > 0)) throw UsageError(std::string("--") + name + ": must be > 0 (got '" + v + "')");
+  return x;
+}
+
+std::vector<board::Chord3> plan_chords(const std::string& file, const planner::Config& cfg, double spm) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw UsageError("cannot read '" + file + "'");
+  std::stringstream buf;
+  buf << in.rdbuf();
+  std::vector<gcode::Block> blocks;
+  try {
+    blocks = gcode::parse(buf.str());
+  } catch (const gcode::Error& e) {
+    throw UsageError(file + ": " + e.what());
+  }
+  planner::Plan plan;
+  try {
+    plan = planner::plan(blocks, cfg);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(file + ": " + e.what());
+  }
+  if (plan.total_time / cfg.cycle_s > 2e7) throw UsageError(file + ": more than 2e7 cycles, more than this tool plans");
+  std::vector<board::Chord3> out;
+  for (const auto& c : planner::chords_in_steps(planner::interpolate(plan), spm)) out.push_back({c.dx, c.dy, c.dz});
+  return out;
+}
+
+void show_progress(const board::Progress& p, double spm) {
+  static std::size_t last = static_cast<std::size_t>(-1);
+  if (p.sent == last || p.total == 0) return;
+  if (p.sent != p.total && p.sent % 50 != 0) return;
+  last = p.sent;
+  const int w = 30, done = static_cast<int>(w * p.sent / p.total);
+  std::fprintf(stderr, "\r[%.*s%.*s] %3zu%% %zu/%zu chords  X %9.3f Y %9.3f Z %9.3f mm  queue %3u", done,
+               "##############################", w - done, "                              ",
+               100 * p.sent / p.total, p.sent, p.total, p.pos[0] / spm, p.pos[1] / spm, p.pos[2] / spm, p.level);
+}
+
+int report(const board::StreamResult& r, std::size_t n) {
+  std::printf("stream: %u of %zu chords run, underruns %u, watchdog trips %u%s\n", r.chords, n, r.underruns,
+              r.wdog_trips, r.stopped ? ", STOPPED by Ctrl-C" : "");
+  std::printf("stream: link %llu frames, %llu resends, %llu refused, %llu bad replies\n",
+              static_cast<unsigned long long>(r.link.frames), static_cast<unsigned long long>(r.link.resends),
+              static_cast<unsigned long long>(r.link.refused), static_cast<unsigned long long>(r.link.bad_replies));
+  std::printf("stream: position %lld %lld %lld steps (program: %lld %lld %lld)\n", static_cast<long long>(r.end[0]),
+              static_cast<long long>(r.end[1]), static_cast<long long>(r.end[2]),
+              static_cast<long long>(r.expected[0]), static_cast<long long>(r.expected[1]),
+              static_cast<long long>(r.expected[2]));
+  if (r.stopped) return 130;
+  return (r.end == r.expected && r.chords == n) ? 0 : 1;
+}
+
+int run_stream(const std::vector<std::string>& argv) {
+  const Args a(argv, {"quiet", "hw-arcs"},
+               {"port", "baud", "steps-per-mm", "accel", "cycle", "step-len", "step-space", "watchdog", "timeout"});
+  if (a.help()) {
+    std::fputs(kHelp, stdout);
+    return 0;
+  }
+  a.expect_positional({"FILE"});
+  if (a.flag("hw-arcs")) throw UsageError("--hw-arcs: paper A mode is not implemented yet (docs/board.md)");
+  const auto port = a.option("port");
+  if (!port) throw UsageError("--port DEVICE is required (e.g. /dev/ttyUSB1, or the path board-sim prints)");
+  const auto baud = static_cast<unsigned>(parse_int(a.option_or("baud", "1000000"), "--baud"));
+  if (!board::baud_supported(baud)) throw UsageError("--baud: " + std::to_string(baud) + " is not a rate the port takes");
+  planner::Config pc;
+  if (a.option("accel")) {
+    const double acc = positive(a, "accel", "1") / 3600;
+    pc.machine.amax = {acc, acc, acc};
+  }
+  pc.cycle_s = positive(a, "cycle", "1") / 1000;
+  const double spm = positive(a, "steps-per-mm", "1000");
+  board::StreamConfig sc;
+  sc.cycle_s = pc.cycle_s;
+  sc.step_len = static_cast<std::uint32_t>(positive(a, "step-len", "1") * sc.clock_hz / 1e6 + 0.5);
+  sc.step_space = static_cast<std::uint32_t>(positive(a, "step-space", "1") * sc.clock_hz / 1e6 + 0.5);
+  sc.wdog_clocks = static_cast<std::uint32_t>(positive(a, "watchdog", "50") * sc.clock_hz / 1e3);
+  board::LinkTimes lt;
+  lt.dead_s = positive(a, "timeout", "3");
+  const auto chords = plan_chords(a.positional()[0], pc, spm);
+  try {
+    board::SerialPort sp(*port, baud);
+    board::LinkClient link(sp, lt);
+    std::signal(SIGINT, on_sigint);
+    const bool bar = !a.flag("quiet") && isatty(STDERR_FILENO);
+    auto progress = [&](const board::Progress& p) {
+      if (bar) show_progress(p, spm);
+    };
+    const auto r = board::stream_chords(link, sp, chords, sc, progress, &g_stop);
+    if (bar) std::fputs("\n", stderr);
+    return report(r, chords.size());
+  } catch (const board::LinkError& e) {
+    throw UsageError(*port + ": " + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(a.positional()[0] + ": " + e.what());
+  }
+}
+
+const CommandRegistrar kRegistrar{
+    Command{"stream", "stream a G-code program's chords to the board over its serial link", run_stream}};
+
+}  // namespace
+}  // namespace contour::cli
+#endif

@@ -1,0 +1,81 @@
+// The Verilated board (rtl/board/board_top, 12 MHz, 1 Mbaud) with its
+// UART at the bit level: host bytes are sent as 8N1 characters on the RX
+// pin, the TX pin is decoded by a receiver of its own here (not the RTL's),
+// and every rising edge of a STEP pin is recorded with the DIR pin as a
+// pulse and its clock. On the one harness base (tb/common/harness.hpp:
+// FST on request).
+//
+// Faults on the wire, for the tests and `contour board-sim`: flip one bit
+// of every Nth character, drop every Mth character (each way), or cut the
+// host-to-board line for a while (characters sent then are lost).
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "interp/types.hpp"
+#include "link_proto.hpp"
+
+namespace contour::board {
+
+constexpr double kClockHz = 12e6;      // the iCEBreaker's clock
+constexpr unsigned kClksPerBit = 12;   // 1 Mbaud (board_top's default)
+
+struct StepEvent {
+  std::uint64_t clock = 0;  // clock of the rising edge
+  Pulse pulse;
+};
+
+struct Faults {
+  std::uint64_t flip_every = 0;   // flip a bit of every Nth character (0: none)
+  std::uint64_t drop_every = 0;   // drop every Mth character (0: none)
+  double cut_at_s = -1;           // host-to-board line dead from this simulated time ...
+  double cut_for_s = 0;           // ... for this long
+};
+
+class BoardSim {
+ public:
+  explicit BoardSim(std::string fst_path = "", Faults faults = {});
+  ~BoardSim();
+  BoardSim(const BoardSim&) = delete;
+  BoardSim& operator=(const BoardSim&) = delete;
+
+  void send(const Bytes& bytes);                 // queue host-to-board characters
+  void run(std::uint64_t clocks);                // advance the board
+  Bytes take_received();                         // board-to-host characters so far
+  bool line_idle() const;                        // nothing queued or on the RX pin
+  std::uint64_t clocks() const;
+  double seconds() const { return static_cast<double>(clocks()) / kClockHz; }
+  const std::vector<StepEvent>& steps() const { return steps_; }
+  std::uint64_t simultaneous_steps() const { return simultaneous_; }  // two STEP edges in one clock
+  bool enable_pin() const;
+  std::uint64_t faults_done() const { return faults_done_; }
+
+ private:
+  struct Impl;
+  void clock_rx_pin();
+  void clock_tx_pin();
+  void sample_steps();
+  bool fault_drop(std::uint64_t n, bool to_board);
+  std::uint8_t fault_flip(std::uint8_t c, std::uint64_t n);
+
+  std::unique_ptr<Impl> impl_;
+  Faults faults_;
+  std::deque<std::uint8_t> tx_queue_;  // to the board
+  std::uint64_t sent_ = 0, recv_ = 0, faults_done_ = 0;
+  int rx_bit_ = -1;                    // bit being sent on RX (-1 idle, 0 start, 1..8 data, 9 stop)
+  unsigned rx_cnt_ = 0;
+  std::uint8_t rx_char_ = 0;
+  int tx_bit_ = -1;                    // receiver of TX: -1 idle
+  unsigned tx_cnt_ = 0;
+  std::uint8_t tx_char_ = 0;
+  Bytes received_;
+  std::vector<StepEvent> steps_;
+  std::uint8_t last_step_ = 0;
+  std::uint64_t simultaneous_ = 0;
+};
+
+}  // namespace contour::board
