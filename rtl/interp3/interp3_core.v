@@ -20,11 +20,9 @@
 // Update (additions only; 2a is a shifted left by one):
 //   X: x+1, exy -= 2b, exz -= 2c   Y: y+1, exy += 2a, eyz -= 2c
 //   Z: z+1, exz += 2a, eyz += 2b
-// Each discriminant has two adders from registers (-2b and -2c are kept
-// negated, loaded with the move, so that no subtraction puts an inverter
-// in front of a carry chain), chosen after the chain; the distance-left
-// flag of the moving axis is cleared when its incremented coordinate
-// equals its end.
+// Each discriminant has one adder whose operand is a two-way choice (or
+// nothing); the distance-left flag of the moving axis is cleared when its
+// incremented coordinate equals its end.
 //
 // Timing: i_load in a clock loads a move (x = y = z = 0, exy = a - b,
 // exz = a - c, eyz = b - c) and takes priority over i_cmd; it may abandon a
@@ -80,7 +78,6 @@ module interp3_core #(
   localparam integer EW = W + 2;  // discriminant width
 
   reg [W-1:0] a_q, b_q, c_q;
-  reg [W+1:0] nb2_q, nc2_q;  // -2b, -2c (two's complement, W + 2 bits)
   reg xneg_q, yneg_q, zneg_q;
   reg [W-1:0] x_q, y_q, z_q;
   reg [EW-1:0] exy_q, exz_q, eyz_q;
@@ -103,6 +100,7 @@ module interp3_core #(
   // 2a, 2b, 2c in EW bits (an end is below 2^W, so its double below 2^(W+1)).
   wire [EW-1:0] a2 = {1'b0, a_q, 1'b0};
   wire [EW-1:0] b2 = {1'b0, b_q, 1'b0};
+  wire [EW-1:0] c2 = {1'b0, c_q, 1'b0};
   wire [W-1:0] x_inc = x_q + 1'b1;
   wire [W-1:0] y_inc = y_q + 1'b1;
   wire [W-1:0] z_inc = z_q + 1'b1;
@@ -125,14 +123,14 @@ module interp3_core #(
     if (mv_x) begin
       x_d = x_inc;
       rx_d = x_inc != a_q;
-      exy_d = exy_q + nb2_q;
-      exz_d = exz_q + nc2_q;
+      exy_d = exy_q - b2;
+      exz_d = exz_q - c2;
     end
     if (mv_y) begin
       y_d = y_inc;
       ry_d = y_inc != b_q;
       exy_d = exy_q + a2;
-      eyz_d = eyz_q + nc2_q;
+      eyz_d = eyz_q - c2;
     end
     if (mv_z) begin
       z_d = z_inc;
@@ -153,8 +151,6 @@ module interp3_core #(
       a_q <= {W{1'b0}};
       b_q <= {W{1'b0}};
       c_q <= {W{1'b0}};
-      nb2_q <= {(W+2){1'b0}};
-      nc2_q <= {(W+2){1'b0}};
       xneg_q <= 1'b0;
       yneg_q <= 1'b0;
       zneg_q <= 1'b0;
@@ -162,8 +158,6 @@ module interp3_core #(
       a_q <= i_xe;
       b_q <= i_ye;
       c_q <= i_ze;
-      nb2_q <= {(W+2){1'b0}} - {1'b0, i_ye, 1'b0};
-      nc2_q <= {(W+2){1'b0}} - {1'b0, i_ze, 1'b0};
       xneg_q <= i_xneg;
       yneg_q <= i_yneg;
       zneg_q <= i_zneg;
@@ -240,7 +234,6 @@ module interp3_core #(
   // so nothing wraps; the registers, sign-extended, must equal them, so no
   // addition ever overflowed its W+2 bits.
   localparam integer FW = 2 * W + 3;
-  wire [EW-1:0] c2 = {1'b0, c_q, 1'b0};
   wire [W:0] x2_f = {x_q, 1'b1};  // 2x + 1
   wire [W:0] y2_f = {y_q, 1'b1};
   wire [W:0] z2_f = {z_q, 1'b1};
@@ -281,8 +274,6 @@ module interp3_core #(
       assert (exy_f >= -b2_f && exy_f <= a2_f);
       assert (exz_f >= -c2_f && exz_f <= a2_f);
       assert (eyz_f >= -c2_f && eyz_f <= b2_f);
-      // The negated steps are the negated doubles.
-      assert (nb2_q == -b2 && nc2_q == -c2);
       // No axis passes its end; the flags are the comparisons they stand for.
       assert (x_q <= a_q && y_q <= b_q && z_q <= c_q);
       assert (rx_q == (x_q < a_q) && ry_q == (y_q < b_q) && rz_q == (z_q < c_q));

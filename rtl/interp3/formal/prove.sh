@@ -70,7 +70,7 @@ done
 # Mutants: "description|sed expression". Each must make the proof fail.
 mutants=(
   "load Exy = B - A instead of A - B|s/exy_q <= ld_xe - ld_ye;/exy_q <= ld_ye - ld_xe;/"
-  "X step leaves Exz unchanged|s/exz_d = exz_q + nc2_q;/exz_d = exz_q;/"
+  "X step leaves Exz unchanged|s/exz_d = exz_q - c2;/exz_d = exz_q;/"
   "distance-left flag of X cleared one step late|s/rx_d = x_inc != a_q;/rx_d = x_q != a_q;/"
   "selection ignores the sign of Eyz|s/(~rz_q | eyz_ge)/(1'b1)/"
 )
