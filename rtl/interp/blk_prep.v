@@ -25,7 +25,7 @@ module blk_prep #(
     input  wire [4*W+8:0] i_blk,      // the host's block: [BLK_BITS-1:0], interp_block.vh
     output wire [1:0]     o_inflight, // pushes not yet written (0..2)
     output wire           o_wr,       // the prepared block is valid
-    output wire [9*W+29:0] o_pre      // the prepared block: [PRE_BITS-1:0], interp_block.vh
+    output wire [8*W+26:0] o_pre      // the prepared block: [PRE_BITS-1:0], interp_block.vh
 );
 
 `include "interp_block.vh"
@@ -84,8 +84,7 @@ module blk_prep #(
   wire [W+1:0] d2 = arc1_q ? two : {{(W+1){1'b1}}, 1'b0};
 
   reg v2_q;
-  reg [W:0] add2_q;
-  reg [W+1:0] nsub2_q, nadd2_q;  // -SUB, 2 - ADD
+  reg [W:0] sub2_q, add2_q;
   reg [W+1:0] ti1_q, ti2_q, tim1_q, to1_q, to2_q;
   reg [W-1:0] cim1_q;         // ci - 1
   reg arc2_q, cw2_q, sxn2_q, syn2_q;
@@ -101,11 +100,8 @@ module blk_prep #(
   always @(posedge i_clk) begin
     if (v1_q) begin
       cim1_q <= ci1_q - 1'b1;
-      // SUB = 2 ci - 1 (arc) / B (line), stored negated: D - SUB is an add.
-      nsub2_q <= arc1_q ? two - {1'b0, ci1_q, 1'b0} - 1'b1 : {(W+2){1'b0}} - to;
+      sub2_q <= arc1_q ? {ci1_q - 1'b1, 1'b1} : {1'b0, to1s_q};
       add2_q <= arc1_q ? {co1_q, 1'b1} : {1'b0, ti1s_q};
-      // 2 - ADD = 1 - 2 co (arc): the -SUB a crossing takes.
-      nadd2_q <= two - {1'b0, co1_q, 1'b1};
       ti1_q <= ti + d1;
       ti2_q <= ti + d2;
       tim1_q <= ti - 1'b1;
@@ -135,8 +131,7 @@ module blk_prep #(
   assign o_pre[PRE_K +: 3] = k2_q;
   assign o_pre[PRE_CI +: W] = ci2_q;
   assign o_pre[PRE_CO +: W] = co2_q;
-  assign o_pre[PRE_NSUB +: W + 2] = nsub2_q;
-  assign o_pre[PRE_NADD2 +: W + 2] = nadd2_q;
+  assign o_pre[PRE_SUB +: W + 1] = sub2_q;
   assign o_pre[PRE_ADD +: W + 1] = add2_q;
   assign o_pre[PRE_TI1 +: W + 2] = ti1_q;
   assign o_pre[PRE_TI2 +: W + 2] = ti2_q;

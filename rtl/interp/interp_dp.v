@@ -36,7 +36,7 @@ module interp_dp #(
     // Prepared block (blk_prep), valid/ready handshake.
     input  wire           i_valid,
     output wire           o_ready,       // block is taken in this clock
-    input  wire [9*W+29:0] i_pre,        // [PRE_BITS-1:0], interp_block.vh
+    input  wire [8*W+26:0] i_pre,        // [PRE_BITS-1:0], interp_block.vh
     // Output pulse, registered: valid in the clock after the step, together
     // with the state after it.
     output reg            o_pulse,
@@ -66,8 +66,7 @@ module interp_dp #(
   wire [2:0] l_k = i_pre[PRE_K +: 3];
   wire [W-1:0] l_ci = i_pre[PRE_CI +: W];
   wire [W-1:0] l_co = i_pre[PRE_CO +: W];
-  wire [W+1:0] l_nsub = i_pre[PRE_NSUB +: W + 2];
-  wire [W+1:0] l_nadd2 = i_pre[PRE_NADD2 +: W + 2];
+  wire [W:0] l_sub = i_pre[PRE_SUB +: W + 1];
   wire [W:0] l_add = i_pre[PRE_ADD +: W + 1];
   wire [W+1:0] l_ti1 = i_pre[PRE_TI1 +: W + 2];
   wire [W+1:0] l_ti2 = i_pre[PRE_TI2 +: W + 2];
@@ -90,9 +89,7 @@ module interp_dp #(
   reg [1:0]     q_q;
   reg [2:0]     k_q;
   reg [W+1:0]   d_q;
-  reg [W+1:0]   nsub_q;                 // -SUB: D - SUB is one add
-  reg [W:0]     add_q;
-  reg [W+1:0]   nadd2_q;                // arc: 2 - ADD, the -SUB of a crossing
+  reg [W:0]     sub_q, add_q;
   reg [W-1:0]   ci_q, co_q;
   reg [W+1:0]   ti1_q, ti2_q, tim1_q, to2_q;
   reg           in_ex_q, out_ex_q, in_one_q, out_one_q, ci_one_q, co_ti_q;
@@ -142,23 +139,15 @@ module interp_dp #(
   wire pulse_neg = arc_q ? ((pulse_x ? qxn : qyn) ^ inw) : (pulse_x ? sxn_q : syn_q);
 
   // ------------------------------------------------------- next values
-  // Every register that steps has one carry chain whose operands are
-  // registers, then one LUT level (the step/load choice) before its flop:
-  // no operand or result multiplexer around a chain.
   wire [W:0] two = {{(W-1){1'b0}}, 2'b10};
-  wire [W+1:0] two_x = {1'b0, two};
-  wire [W+1:0] d_in = d_q + nsub_q;
+  wire [W+1:0] d_in = d_q - {1'b0, sub_q};
   wire [W+1:0] d_out = d_q + {1'b0, add_q};
-  // ci: -1 (arc) or +1 (line) in one chain, the direction a register bit.
-  // An inward step that crosses has ci = 1, so ci - 1 = 0 and co can be
-  // ORed in: no multiplexer after the chain.
+  // ci: -1 (arc) or +1 (line) in one carry chain whose operand is a
+  // register bit (no up/down multiplexer after two chains). An inward step
+  // that crosses has ci = 1, so ci - 1 = 0 and co is ORed in: no crossing
+  // multiplexer after the chain either.
   wire [W-1:0] ci_step = ci_q + {{(W-1){arc_q}}, 1'b1};
   wire [W-1:0] ci_xing = co_q & {W{xing}};
-  // -SUB: + 2 within the quadrant; at a crossing 2 - ADD. The crossing
-  // has SUB = 1, so -SUB + 2 = 1 and the new value is that sum with bit 0
-  // of 1 ^ (2 - ADD) flipped in, an XOR mask formed beside the chain.
-  wire [W+1:0] nsub_step = nsub_q + two_x;
-  wire [W+1:0] nsub_mask = (nadd2_q ^ {{(W+1){1'b0}}, 1'b1}) & {(W+2){xing}};
 
   // Comparisons of the current registers with per-move constants; they
   // feed only flag registers.
@@ -181,22 +170,16 @@ module interp_dp #(
     else if (st) d_q <= inw ? d_in : d_out;
   end
 
-  // -SUB, SUB = 2|c_in| - 1 (arc) / B (line).
+  // SUB = 2|c_in| - 1 (arc) / B (line).
   always @(posedge i_clk) begin
-    if (ld) nsub_q <= l_nsub;
-    else if (st & inw & arc_q) nsub_q <= nsub_step ^ nsub_mask;
+    if (ld) sub_q <= l_sub;
+    else if (st & inw & arc_q) sub_q <= xing ? add_q - two : sub_q - two;
   end
 
   // ADD = 2|c_out| + 1 (arc) / A (line); 1 after a crossing.
   always @(posedge i_clk) begin
     if (ld) add_q <= l_add;
     else if (st & arc_q & (~inw | xing)) add_q <= inw ? {{W{1'b0}}, 1'b1} : add_q + two;
-  end
-
-  // 2 - ADD (arc): -2 on an outward step, 1 after a crossing.
-  always @(posedge i_clk) begin
-    if (ld) nadd2_q <= l_nadd2;
-    else if (st & arc_q & (~inw | xing)) nadd2_q <= inw ? {{(W+1){1'b0}}, 1'b1} : nadd2_q - two_x;
   end
 
   // ci: inward-axis magnitude; takes co's value at a crossing.
@@ -368,8 +351,6 @@ module interp_dp #(
   wire signed [2*W+5:0] ci_s = $signed({{(W+6){1'b0}}, ci_q});
   wire signed [2*W+5:0] co_s = $signed({{(W+6){1'b0}}, co_q});
   wire signed [2*W+5:0] d_s = {{(W+4){d_q[W+1]}}, d_q};
-  wire [W+1:0] sub_w = -nsub_q;        // SUB
-  wire [W:0] sub_q = sub_w[W:0];
   wire signed [2*W+5:0] sub_s = $signed({{(W+5){1'b0}}, sub_q});
   wire signed [2*W+5:0] add_s = $signed({{(W+5){1'b0}}, add_q});
   wire signed [2*W+5:0] r2_s = $signed({2'b00, r2_f});
@@ -410,7 +391,7 @@ module interp_dp #(
 `endif
         assert(d_s >= -sub_s && (d_s < add_s || d_q == 0));
         assert({2'b00, ci_q} <= ti_f && {2'b00, co_q} <= to_f);
-        assert(ti_f == {1'b0, add_q} && to_f == {1'b0, sub_q} && sub_w[W+1] == 1'b0);
+        assert(ti_f == {1'b0, add_q} && to_f == {1'b0, sub_q});
         // Done within the pulse count: every pulse is one unit of A + B.
         assert({{4{1'b0}}, ci_q} + {{4{1'b0}}, co_q} == n_f);
       end else begin
@@ -419,8 +400,6 @@ module interp_dp #(
         assert(co_ti_q == ({2'b00, co_q} == ti_f));
         assert(sub_q == {ci_q, 1'b0} - 1'b1);
         assert(add_q == {co_q, 1'b1});
-        assert(sub_w[W+1] == 1'b0);
-        assert(nadd2_q == two_x - {1'b0, add_q});
         // |D| <= 2 (2^W - 1) (docs/algorithm.md, "Bounds"): W + 2 bits.
         assert(d_s <= 2 * MAXM_S && d_s >= -2 * MAXM_S);
 `ifndef FORMAL_REF_ONLY
