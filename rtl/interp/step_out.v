@@ -2,16 +2,10 @@
 //
 // A command pulse reaches the core only when the output can take the pulse
 // it will produce: both channels free and no pulse on its way from the
-// core (the core's pulse output is registered), as of the clock before. A
-// command pulse that comes while a move runs and the output cannot take it
-// does not advance the interpolation; it sets the sticky overrun flag and
-// counts in OVR_COUNT. No pulse is ever dropped after the core has
-// produced it.
-//
-// The command passed to the core is a register (o_cmd, one clock after
-// i_cmd): in the core the command decides the step and the load of the
-// next block, which fan out to every datapath register, so it must come
-// straight from a flip-flop.
+// core (the core's pulse output is registered), as of the clock before. A command pulse that comes
+// while a move runs and the output cannot take it does not advance the
+// interpolation; it sets the sticky overrun flag and counts in OVR_COUNT.
+// No pulse is ever dropped after the core has produced it.
 `default_nettype none
 
 module step_out #(
@@ -26,7 +20,7 @@ module step_out #(
     input  wire [TW-1:0] i_hold,
     input  wire          i_cmd,        // command pulse (cmd_gen)
     input  wire          i_busy,       // the core has a move running
-    output reg           o_cmd,        // command pulse passed to the core (registered)
+    output wire          o_cmd,        // command pulse passed to the core
     input  wire          i_pulse,      // the core's output pulse
     input  wire          i_pulse_y,
     input  wire          i_pulse_neg,
@@ -38,21 +32,17 @@ module step_out #(
     output reg  [31:0]   o_ovr_count
 );
 
-  // Ready, a register: the channels were free, no pulse was on its way and
-  // no command was at the core or passed to it in the clock before (a
-  // channel freed in that clock is seen one clock later: conservative,
-  // never optimistic).
+  // Ready, a register so the command gate is one gate from flops: the
+  // channels were free, no pulse was on its way and no command went to
+  // the core in the clock before (a channel freed in that clock is seen
+  // one clock later: conservative, never optimistic).
   wire rdy_x, rdy_y;
   reg ready_q;
-  wire pass = i_cmd & ready_q;
   always @(posedge i_clk) begin
     if (i_rst) ready_q <= 1'b0;
-    else ready_q <= rdy_x & rdy_y & ~i_pulse & ~o_cmd & ~pass;
+    else ready_q <= rdy_x & rdy_y & ~i_pulse & ~o_cmd;
   end
-  always @(posedge i_clk) begin
-    if (i_rst) o_cmd <= 1'b0;
-    else o_cmd <= pass;
-  end
+  assign o_cmd = i_cmd & ready_q;
   wire overrun = i_cmd & ~ready_q & i_busy;
 
   step_chan #(.TW(TW)) u_x (
