@@ -4,7 +4,7 @@
 #   make test    the whole suite (ctest: model, RTL, ISS, 8085, cosim, lint)
 #   make build   configure and build everything; the CLI is build/contour
 #   make bench   speed figures (Google Benchmark, callgrind; paper B: model/planner/bench_gcode.sh)
-#   make synth   yosys + nextpnr-ice40: LCs and Fmax on HX8K and UP5K
+#   make synth   yosys + nextpnr-ice40: LCs, BRAMs, Fmax over seeds 1-5 (SEEDS=...) on HX8K and UP5K
 #   make lint    verilator --lint-only -Wall over rtl/ (every core's file list)
 #   make formal  the formal proofs and their mutants (ctest -L formal)
 #   make mutants planted bugs in model, RTL, 8085 program: each must be KILLED

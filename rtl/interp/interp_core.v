@@ -54,14 +54,14 @@ module interp_core #(
       .o_inflight(p_inflight), .o_wr(p_wr), .o_pre(p_pre)
   );
 
-  wire head_valid, pop, unused_mem_full;  // full is decided below, with blocks in flight
+  wire head_valid, pop;
   wire [PRE_BITS-1:0] head;
   wire [QAW+1:0] fifo_level;
   wire [QAW:0] mem_used;
 
   move_fifo #(.WIDTH(PRE_BITS), .AW(QAW)) u_fifo (
       .i_clk(i_clk), .i_rst(i_rst), .i_flush(i_abort),
-      .i_push(p_wr), .i_data(p_pre), .o_full(unused_mem_full),
+      .i_push(p_wr), .i_data(p_pre),
       .i_pop(pop), .o_valid(head_valid), .o_data(head), .o_level(fifo_level), .o_used(mem_used)
   );
 

@@ -115,7 +115,8 @@ module interp_dp #(
   wire inw = kz ? (d_pos ? ~in_ex_q : out_ex_q) : d_pos;
   // An inward step from ci == 1 crosses onto the next quadrant (arcs only;
   // in the end quadrant ci never falls below ti >= 1).
-  wire xing = arc_q & ~kz & ci_one_q;
+  // (ci_one_q is 0 on a line.)
+  wire xing = ~kz & ci_one_q;
 
   // Would this step end the move? In the end quadrant only when one axis
   // has arrived and the other has one step left, and then the end-point
@@ -141,7 +142,12 @@ module interp_dp #(
   wire [W:0] two = {{(W-1){1'b0}}, 2'b10};
   wire [W+1:0] d_in = d_q - {1'b0, sub_q};
   wire [W+1:0] d_out = d_q + {1'b0, add_q};
-  wire [W-1:0] ci_step = arc_q ? ci_q - 1'b1 : ci_q + 1'b1;
+  // ci: -1 (arc) or +1 (line) in one carry chain whose operand is a
+  // register bit (no up/down multiplexer after two chains). An inward step
+  // that crosses has ci = 1, so ci - 1 = 0 and co is ORed in: no crossing
+  // multiplexer after the chain either.
+  wire [W-1:0] ci_step = ci_q + {{(W-1){arc_q}}, 1'b1};
+  wire [W-1:0] ci_xing = co_q & {W{xing}};
 
   // Comparisons of the current registers with per-move constants; they
   // feed only flag registers.
@@ -156,9 +162,11 @@ module interp_dp #(
   // ti == 0 is co == ti right after a crossing (co = 0): ti = tim1 + 1.
   wire ti_z = (tim1_q == {(W+2){1'b1}});
 
-  // D: cleared by a load, else one add per step.
+  // D: cleared by a load, else one add per step. Not reset: like the
+  // magnitudes, it means nothing until a block is loaded (a reset in its
+  // clear would put i_rst into the load's fan-out).
   always @(posedge i_clk) begin
-    if (i_rst | ld) d_q <= {(W+2){1'b0}};
+    if (ld) d_q <= {(W+2){1'b0}};
     else if (st) d_q <= inw ? d_in : d_out;
   end
 
@@ -168,23 +176,22 @@ module interp_dp #(
     else if (st & inw & arc_q) sub_q <= xing ? add_q - two : sub_q - two;
   end
 
-  // ADD = 2|c_out| + 1 (arc) / A (line).
+  // ADD = 2|c_out| + 1 (arc) / A (line); 1 after a crossing.
   always @(posedge i_clk) begin
     if (ld) add_q <= l_add;
-    else if (st & arc_q) add_q <= inw ? (xing ? {{W{1'b0}}, 1'b1} : add_q) : add_q + two;
+    else if (st & arc_q & (~inw | xing)) add_q <= inw ? {{W{1'b0}}, 1'b1} : add_q + two;
   end
 
   // ci: inward-axis magnitude; takes co's value at a crossing.
   always @(posedge i_clk) begin
     if (ld) ci_q <= l_ci;
-    else if (st & inw) ci_q <= xing ? co_q : ci_step;
+    else if (st & inw) ci_q <= ci_step | ci_xing;
   end
 
   // co: outward-axis magnitude; 0 after a crossing.
   always @(posedge i_clk) begin
     if (ld) co_q <= l_co;
-    else if (st & inw & xing) co_q <= {W{1'b0}};
-    else if (st & ~inw) co_q <= co_q + 1'b1;
+    else if (st & (~inw | xing)) co_q <= inw ? {W{1'b0}} : co_q + 1'b1;
   end
 
   // Quadrant and crossings left; k = 0 with both axes exhausted is "done",
@@ -378,6 +385,7 @@ module interp_dp #(
         // Line: D = A*y - B*x, within [-B, A - 1] (or 0 when A = 0), and
         // the distance travelled never passes the end point.
         assert(k_q == 3'd0);
+        assert(!ci_one_q);  // xing leaves arc_q out
 `ifndef FORMAL_REF_ONLY
         assert(d_s == add_s * co_s - sub_s * ci_s);
 `endif

@@ -1,8 +1,11 @@
 // move_fifo: the move queue. First-word-fall-through FIFO: the head block
 // is on o_data whenever o_valid is high, and i_pop takes it. The storage is
 // a synchronous-read memory (an iCE40 block RAM) behind one output
-// register, so the head is always a register. A push while full is ignored
-// here; wb_regs refuses and flags it before it gets here.
+// register, so the head is always a register. The caller never pushes
+// while the memory is full (interp_core refuses such a push before its
+// block preparation, from its registered full flag): the write port has no
+// full test of its own, so no pointer subtraction reaches the block RAM's
+// write enable.
 `default_nettype none
 
 module move_fifo #(
@@ -14,7 +17,6 @@ module move_fifo #(
     input  wire             i_flush,    // drop every queued block
     input  wire             i_push,
     input  wire [WIDTH-1:0] i_data,
-    output wire             o_full,
     input  wire             i_pop,
     output reg              o_valid,
     output reg  [WIDTH-1:0] o_data,
@@ -24,16 +26,20 @@ module move_fifo #(
 
   localparam integer DEPTH = 1 << AW;
 
+  // The memory is never read at the address written in the same clock (a
+  // read needs the memory not empty, a write goes to the free end and the
+  // memory is never full then): no_rw_check tells yosys not to emulate a
+  // read-during-write behaviour around the block RAM.
+  (* no_rw_check *)
   reg [WIDTH-1:0] mem [0:DEPTH-1];
   reg [AW:0] wptr_q, rptr_q;
 
   wire [AW:0] used = wptr_q - rptr_q;
   wire mem_empty = (wptr_q == rptr_q);  // equality: shorter than used == 0
-  assign o_full = used[AW];
   assign o_used = used;
   assign o_level = {1'b0, used} + {{(AW+1){1'b0}}, o_valid};
 
-  wire wr = i_push & ~o_full;
+  wire wr = i_push;
   wire rd = ~mem_empty & (~o_valid | i_pop);
 
   // Memory write port.

@@ -10,7 +10,7 @@
 #   cpu8085_*:   the 8085 CPU alone (figures: docs/cpu8085.md)
 #   board8085_*: the board, ROM = the board test program's image
 #
-# The interp designs run nextpnr with --no-promote-globals: timing_wrap puts
+# The interp designs (interp3 too) run nextpnr with --no-promote-globals: timing_wrap puts
 # the clock on SB_GB itself, and without promotion nextpnr keeps high-fanout
 # enables off the few global nets (faster here).
 define design
@@ -24,7 +24,7 @@ endef
 
 $(foreach dev,hx8k up5k,$(foreach d,CORE TOP DP,\
   $(eval $(call design,$(shell echo $(d) | tr A-Z a-z)_$(dev),interp/interp.f,$(d),$(dev),--no-promote-globals))))
-$(eval $(call design,interp3_hx8k,interp3/interp3.f,INTERP3,hx8k,))
+$(eval $(call design,interp3_hx8k,interp3/interp3.f,INTERP3,hx8k,--no-promote-globals))
 $(foreach dev,hx8k up5k,$(eval $(call design,cpu8085_$(dev),cpu8085/cpu8085.f,CPU8085,$(dev),)))
 $(foreach dev,hx8k up5k,$(eval $(call design,board8085_$(dev),board8085/board8085.f,BOARD8085,$(dev),)))
 
