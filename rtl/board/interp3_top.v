@@ -66,7 +66,8 @@ module interp3_top #(
   wire q_full, q_valid;
   wire [QW-1:0] q_data;
   wire [QAW+1:0] q_level;
-  wire [QAW:0] unused_used;
+  wire [QAW:0] q_used;  // chords in the queue's memory (head excluded)
+  assign q_full = q_used[QAW];  // move_fifo takes no push when full: refused above
   wire [31:0] pos_x, pos_y, pos_z;
 
   // Acknowledge.
@@ -162,8 +163,8 @@ module interp3_top #(
   wire cmd = loaded_q && !pop && owed_q != 16'd0 && out_idle;
 
   move_fifo #(.WIDTH(QW), .AW(QAW)) u_queue (
-      .i_clk(i_clk), .i_rst(i_rst), .i_flush(abort), .i_push(push), .i_data(q_in), .o_full(q_full),
-      .i_pop(pop), .o_valid(q_valid), .o_data(q_data), .o_level(q_level), .o_used(unused_used)
+      .i_clk(i_clk), .i_rst(i_rst), .i_flush(abort), .i_push(push), .i_data(q_in),
+      .i_pop(pop), .o_valid(q_valid), .o_data(q_data), .o_level(q_level), .o_used(q_used)
   );
 
   // Cycle counter.
