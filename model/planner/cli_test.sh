@@ -43,6 +43,14 @@ head -1 "$work/p.csv" | grep -qx 't_s,x_mm,y_mm,z_mm,feed_mm_min,vx_mm_min,vy_mm
 cycles=$(echo "$json" | sed 's/.*"cycles": \([0-9]*\).*/\1/')
 [ "$(wc -l < "$work/p.csv")" -eq $((cycles + 2)) ] && ok || bad "csv rows $(wc -l < "$work/p.csv") for $cycles cycles"
 
+# The summary streams its samples (none kept) unless --csv or --svg keeps
+# them: both ways measure the same.
+printf 'G21 G64 P0.01\nG0 X50 Y0\nG1 F3000\n' > "$work/poly.ngc"
+awk 'BEGIN { for (k = 1; k <= 200; k++) printf "X%.4f Y%.4f Z%.4f\n", 50 * cos(k / 40), 50 * sin(k / 40), k / 100 }' >> "$work/poly.ngc"
+streamed=$("$contour" gcode "$work/poly.ngc" --format json) || bad "polyline json exit $?"
+kept=$("$contour" gcode "$work/poly.ngc" --format json --csv "$work/poly.csv") || bad "polyline json+csv exit $?"
+[ -n "$streamed" ] && [ "$streamed" = "$kept" ] && ok || bad "streamed summary differs from the kept one"
+
 # SVG: the five plots, each with a title and axis labels.
 "$contour" gcode "$work/paperb.ngc" --svg "$work/svg" > /dev/null || bad "svg exit"
 for f in velocity xy yz zx uv-line2; do

@@ -430,47 +430,65 @@ double chord_error(const Plan& plan, const Sample& a, const Sample& b) {
   return err;
 }
 
-Report analyse(const Plan& plan, const std::vector<Sample>& samples) {
-  Report r;
+Analyser::Analyser(const Plan& plan) : plan_(&plan) {
   const Config& c = plan.config;
-  const double T = c.cycle_s;
-  r.total_time_s = plan.total_time;
-  r.cycles = samples.empty() ? 0 : samples.size() - 1;
+  r_.total_time_s = plan.total_time;
   for (int i = 0; i < 3; ++i) {
-    r.axes[i].vmax = c.machine.vmax[i];
-    r.axes[i].amax = c.machine.amax[i];
+    r_.axes[i].vmax = c.machine.vmax[i];
+    r_.axes[i].amax = c.machine.amax[i];
   }
-  Vec3 v_prev;  // at rest before the first chord
-  for (std::size_t n = 1; n <= samples.size(); ++n) {
-    Vec3 v;  // at rest after the last chord
-    if (n < samples.size()) {
-      const Vec3 d = samples[n].p - samples[n - 1].p;
-      v = (1.0 / T) * d;
-      r.peak_feed = std::max(r.peak_feed, norm(d) / T);
-      const Sample &a = samples[n - 1], &b = samples[n];
-      const double err = chord_error(plan, a, b);
-      if (a.seg == b.seg || plan.junction_tol.empty()) {
-        r.max_chord_error = std::max(r.max_chord_error, err);
-      } else {  // a chord across one or more corners: within their blend tolerance
-        double lim = 0;
-        for (int k = a.seg + 1; k <= b.seg; ++k) lim = std::max(lim, plan.junction_tol[k]);
-        r.max_blend_error = std::max(r.max_blend_error, err);
-        r.blend_ok = r.blend_ok && err <= lim * (1 + kLimitRelTol);
-      }
-    }
-    for (int i = 0; i < 3; ++i) {
-      r.axes[i].peak_v = std::max(r.axes[i].peak_v, std::fabs(v[i]));
-      r.axes[i].peak_a = std::max(r.axes[i].peak_a, std::fabs(v[i] - v_prev[i]) / T);
-    }
-    v_prev = v;
+}
+
+void Analyser::step(const Vec3& v) {
+  const double T = plan_->config.cycle_s;
+  for (int i = 0; i < 3; ++i) {
+    r_.axes[i].peak_v = std::max(r_.axes[i].peak_v, std::fabs(v[i]));
+    r_.axes[i].peak_a = std::max(r_.axes[i].peak_a, std::fabs(v[i] - v_prev_[i]) / T);
   }
+  v_prev_ = v;
+}
+
+void Analyser::add(const Sample& b) {
+  if (count_++ == 0) {  // the start: no chord yet
+    prev_ = b;
+    return;
+  }
+  const Plan& plan = *plan_;
+  const double T = plan.config.cycle_s;
+  const Sample& a = prev_;
+  const Vec3 d = b.p - a.p;
+  r_.peak_feed = std::max(r_.peak_feed, norm(d) / T);
+  const double err = chord_error(plan, a, b);
+  if (a.seg == b.seg || plan.junction_tol.empty()) {
+    r_.max_chord_error = std::max(r_.max_chord_error, err);
+  } else {  // a chord across one or more corners: within their blend tolerance
+    double lim = 0;
+    for (int k = a.seg + 1; k <= b.seg; ++k) lim = std::max(lim, plan.junction_tol[k]);
+    r_.max_blend_error = std::max(r_.max_blend_error, err);
+    r_.blend_ok = r_.blend_ok && err <= lim * (1 + kLimitRelTol);
+  }
+  step((1.0 / T) * d);
+  prev_ = b;
+}
+
+Report Analyser::report() const {
+  Analyser last = *this;
+  if (count_ > 0) last.step(Vec3{});  // at rest after the last chord
+  Report r = last.r_;
+  r.cycles = count_ == 0 ? 0 : count_ - 1;
   constexpr double kSlack = 1 + kLimitRelTol;
-  r.tol_ok = r.max_chord_error <= c.tol_mm * kSlack;
+  r.tol_ok = r.max_chord_error <= plan_->config.tol_mm * kSlack;
   for (auto& ax : r.axes) {
     ax.v_ok = ax.peak_v <= ax.vmax * kSlack;
     ax.a_ok = ax.peak_a <= ax.amax * kSlack;
   }
   return r;
+}
+
+Report analyse(const Plan& plan, const std::vector<Sample>& samples) {
+  Analyser an(plan);
+  for (const Sample& s : samples) an.add(s);
+  return an.report();
 }
 
 }  // namespace contour::planner

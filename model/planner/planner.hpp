@@ -178,4 +178,21 @@ constexpr double kLimitRelTol = 1e-6;
 // each within kLimitRelTol.
 Report analyse(const Plan& plan, const std::vector<Sample>& samples);
 
+// The same measurement one sample at a time, so that the samples need not
+// be kept: add() each sample in order, then report(). analyse() is this.
+class Analyser {
+ public:
+  explicit Analyser(const Plan& plan);
+  void add(const Sample& s);
+  Report report() const;  // at rest after the last sample
+
+ private:
+  void step(const Vec3& v);  // one chord velocity (or rest)
+  const Plan* plan_;
+  Report r_;
+  Sample prev_;
+  Vec3 v_prev_;
+  std::size_t count_ = 0;
+};
+
 }  // namespace contour::planner

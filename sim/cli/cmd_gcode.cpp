@@ -471,10 +471,18 @@ int run_gcode_command(const std::vector<std::string>& argv) {
     return 0;
   }
   const planner::Plan plan = plan_program(q.file, prog.blocks, q.config);
-  const auto samples = planner::interpolate(plan);
-  if (q.pulses) return print_pulses(q, samples);
+  if (q.pulses) return print_pulses(q, planner::interpolate(plan));
 
-  const planner::Report r = planner::analyse(plan, samples);
+  // The samples are kept only for --csv and --svg; the summary streams them.
+  const bool keep = a.option("csv") || a.option("svg");
+  std::vector<planner::Sample> samples;
+  planner::Analyser an(plan);
+  planner::Interpolator it(plan);
+  for (planner::Sample s; it.next(s);) {
+    an.add(s);
+    if (keep) samples.push_back(s);
+  }
+  const planner::Report r = an.report();
   if (auto p = a.option("csv")) write_csv(*p, samples, q.config.cycle_s);
   int svg_files = 0;
   if (auto d = a.option("svg")) svg_files = write_svgs(*d, q.file, plan, samples);
