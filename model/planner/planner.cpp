@@ -23,6 +23,8 @@ constexpr double kOffsetAccelShare = 0.005;          // radial offset jump at a 
 // acceleration at (1 - kCornerShare) of what its axes allow, leaving the
 // rest for the velocity step of passing the corner (planner.hpp, "Blending").
 constexpr double kCornerShare = 0.5;
+// The look-ahead window's bound, in blocks (planner.hpp, "Look-ahead").
+constexpr std::size_t kMaxLookAhead = std::size_t{1} << 16;
 
 void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument(what);
@@ -249,18 +251,42 @@ double junction_limit(const PlannedSegment& s1, const PlannedSegment& s2, const 
   return lim;
 }
 
-// Backward then forward pass over the junction speeds J (J[k]: start of
-// segment k, J[n] = 0): every block can reach its end speed.
-void reachable_junction_speeds(const std::vector<PlannedSegment>& segs, std::vector<double>& J) {
+// Junction speeds by look-ahead over a bounded window (planner.hpp,
+// "Look-ahead"). J[k]: the limit at the start of segment k on entry, the
+// planned speed on return (J[n] = 0). The speed at the end of block k is the
+// backward pass over segments k+1 .. e-1 from a stop at junction e (the
+// window's end), then the forward pass from J[k]. The window grows until the
+// pure deceleration distance from the stop at e (no limit on the way) is
+// more than the backward pass found at k+1: then nothing beyond e can lower
+// J[k+1], and the speed is the whole program's, bit for bit (min and
+// sqrt(x^2 + c) commute, both rounded monotonically). Past kMaxLookAhead
+// blocks the stop at e is kept (slower, never over a limit). Returns the
+// largest window used, in blocks.
+std::size_t windowed_junction_speeds(const std::vector<PlannedSegment>& segs, std::vector<double>& J) {
   const std::size_t n = segs.size();
-  for (std::size_t k = n; k-- > 0;) {
-    const PlannedSegment& s = segs[k];
-    J[k] = std::min({J[k], s.v_cap, std::sqrt(J[k + 1] * J[k + 1] + 2 * s.a_t * s.geom.length)});
-  }
+  std::size_t e = 0, widest = 0;
+  auto reach = [&](std::size_t k, double v) {  // from v at the end of segment k to its start
+    return std::sqrt(v * v + 2 * segs[k].a_t * segs[k].geom.length);
+  };
   for (std::size_t k = 0; k < n; ++k) {
-    const PlannedSegment& s = segs[k];
-    J[k + 1] = std::min(J[k + 1], std::sqrt(J[k] * J[k] + 2 * s.a_t * s.geom.length));
+    e = std::max(e, k + 1);
+    double vb = 0;
+    for (;;) {  // the backward pass from a stop at e down to junction k+1
+      vb = 0;
+      double free_stop = 0;  // the same without the limits on the way
+      for (std::size_t j = e; j-- > k + 1;) {
+        vb = std::min({J[j], segs[j].v_cap, reach(j, vb)});
+        free_stop = reach(j, free_stop);
+      }
+      if (e == n || free_stop > vb || e - k >= kMaxLookAhead) break;
+      ++e;
+    }
+    widest = std::max(widest, e - k);
+    J[k + 1] = vb;
+    J[k] = std::min({J[k], segs[k].v_cap, reach(k, J[k + 1])});
+    J[k + 1] = std::min(J[k + 1], reach(k, J[k]));
   }
+  return widest;
 }
 
 // The trapezoid of a block between its start and end speeds.
@@ -308,6 +334,7 @@ Plan plan(const std::vector<gcode::Block>& blocks, const Config& config) {
   const double T = config.cycle_s;
   const double eps = config.tol_mm * (1 - kTolMargin);
   const double amin = std::min({mc.amax.x, mc.amax.y, mc.amax.z});
+  p.segs.reserve(blocks.size());  // no growth slack: ~470 bytes a block
   for (const auto& b : blocks) p.segs.push_back(plan_segment(b, config, eps));
   reserve_corner_acceleration(p.segs);
 
@@ -321,7 +348,7 @@ Plan plan(const std::vector<gcode::Block>& blocks, const Config& config) {
     J[k] = junction_limit(p.segs[k - 1], p.segs[k], config, tol, amin);
   }
   p.junction_limit = J;
-  reachable_junction_speeds(p.segs, J);
+  p.lookahead_blocks = windowed_junction_speeds(p.segs, J);
   for (std::size_t k = 0; k < n; ++k) shape_trapezoid(p.segs[k], J[k], J[k + 1]);
   const double t = schedule(p.segs, T);
   p.total_time = t;

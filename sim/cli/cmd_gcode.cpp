@@ -264,9 +264,11 @@ std::string read_text(const std::string& file, const std::string& what) {
   require_regular_file(file, what);
   std::ifstream in(file, std::ios::binary);
   if (!in) throw UsageError(what + "cannot read '" + file + "'");
-  std::stringstream buf;
-  buf << in.rdbuf();
-  return buf.str();
+  // One copy of the text (a stringstream would hold a second).
+  std::string text;
+  char buf[1 << 16];
+  while (in.read(buf, sizeof buf) || in.gcount() > 0) text.append(buf, static_cast<std::size_t>(in.gcount()));
+  return text;
 }
 
 gcode::ToolTable read_tool_table(const std::string& file) {
@@ -465,12 +467,13 @@ int run_gcode_command(const std::vector<std::string>& argv) {
     return 0;
   }
   const Request q = parse_request(a);
-  const gcode::Program prog = read_program(q.file, q.read);
+  gcode::Program prog = read_program(q.file, q.read);
   if (q.format == "moves") {
     print_moves(prog);
     return 0;
   }
   const planner::Plan plan = plan_program(q.file, prog.blocks, q.config);
+  std::vector<gcode::Block>().swap(prog.blocks);  // the plan has what the output needs
   if (q.pulses) return print_pulses(q, planner::interpolate(plan));
 
   // The samples are kept only for --csv and --svg; the summary streams them.
