@@ -373,7 +373,7 @@ void print_json(const Request& q, const gcode::Program& prog, const planner::Pla
     << ", \"tolerance_mm\": " << c.tol_mm << ", \"chord_method\": \"" << planner::chord_name(c.chord)
     << "\", \"peak_feed_mm_min\": " << r.peak_feed * 60 << ", \"max_chord_error_mm\": " << r.max_chord_error
     << ", \"tolerance_ok\": " << (r.tol_ok ? "true" : "false") << ", \"blend_tolerance_mm\": " << c.blend_tol_mm
-    << ", \"max_blend_error_mm\": " << r.max_blend_error << ", \"blend_ok\": " << (r.blend_ok ? "true" : "false")
+    << ", \"lookahead_blocks\": " << plan.lookahead_blocks << ", \"max_blend_error_mm\": " << r.max_blend_error << ", \"blend_ok\": " << (r.blend_ok ? "true" : "false")
     << ", \"axes\": {";
   for (int i = 0; i < 3; ++i) {
     const auto& ax = r.axes[i];
