@@ -57,7 +57,6 @@ awk 'BEGIN { srand(1); print "G21 G90 G17 G64 P0.01\nG1 F3000"; x = 0; y = 0;
 size=$(wc -c < "$work/long50.ngc")
 /usr/bin/time -f "%e %M" "$contour" gcode "$work/long50.ngc" > "$work/long50.out" 2> "$work/long50.time" || true
 cycles=$(awk '/^program/ { for (i = 1; i <= NF; i++) if ($(i + 1) == "cycles") { print $i; exit } }' "$work/long50.out")
-# (the JSON is one line of ~300 MB: grep -o, not sed, to find a field in it)
-window=$("$contour" gcode "$work/long50.ngc" --format json | grep -o -m1 '"lookahead_blocks": [0-9]*' | grep -o '[0-9]*$')
+window=$(awk '/^look-ahead/ { print $4; exit }' "$work/long50.out")
 read -r secs kb < <(tail -1 "$work/long50.time")
 echo "1870000 short G1 lines ($((size / 1000000)) MB), summary: $cycles cycles in $secs s ($(awk -v c="$cycles" -v s="$secs" 'BEGIN { printf "%.2f", c / s / 1e6 }') M cycles/s), peak $((kb / 1024)) MB resident, look-ahead window at most $window blocks"

@@ -26,7 +26,7 @@ awk -v t="$t" 'BEGIN { exit !(t >= 3.23 && t <= 3.26) }' && ok || bad "full circ
 
 # Summary text names every limit.
 sum=$("$contour" gcode "$work/paperb.ngc" --tol 0.05 --chord b --cycle 2 --accel 1764000)
-for w in "total time" "peak feed" "max chord err" "chord method b" "tolerance 0.05 um" "of 2 ms" "1764000"; do
+for w in "total time" "look-ahead     at most" "peak feed" "max chord err" "chord method b" "tolerance 0.05 um" "of 2 ms" "1764000"; do
   echo "$sum" | grep -q "$w" && ok || bad "summary lacks '$w'"
 done
 

@@ -409,6 +409,7 @@ void print_summary(const Request& q, const planner::Plan& plan, const planner::R
   std::printf("program        %s: %zu blocks, %zu cycles of %g ms\n", q.file.c_str(), plan.segs.size(), r.cycles,
               c.cycle_s * 1000);
   std::printf("total time     %.4f s\n", r.total_time_s);
+  std::printf("look-ahead     at most %zu blocks\n", plan.lookahead_blocks);
   std::printf("peak feed      %.1f mm/min\n", r.peak_feed * 60);
   std::printf("max chord err  %.4f um (tolerance %g um, chord method %s): %s\n", r.max_chord_error * 1000,
               c.tol_mm * 1000, planner::chord_name(c.chord), r.tol_ok ? "ok" : "EXCEEDED");
