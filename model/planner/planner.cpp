@@ -255,34 +255,42 @@ double junction_limit(const PlannedSegment& s1, const PlannedSegment& s2, const 
 // "Look-ahead"). J[k]: the limit at the start of segment k on entry, the
 // planned speed on return (J[n] = 0). The speed at the end of block k is the
 // backward pass over segments k+1 .. e-1 from a stop at junction e (the
-// window's end), then the forward pass from J[k]. The window grows until the
-// pure deceleration distance from the stop at e (no limit on the way) is
-// more than the backward pass found at k+1: then nothing beyond e can lower
+// window's end), then the forward pass from J[k]. The window is long enough
+// when the pure deceleration from the stop at e (no limit on the way) is more
+// than the backward pass found at k+1: then nothing beyond e can lower
 // J[k+1], and the speed is the whole program's, bit for bit (min and
-// sqrt(x^2 + c) commute, both rounded monotonically). Past kMaxLookAhead
-// blocks the stop at e is kept (slower, never over a limit). Returns the
-// largest window used, in blocks.
+// sqrt(x^2 + c) commute, both rounded monotonically). When it is not, the
+// window doubles (so the pass is recomputed about once per window's length
+// of blocks, not every block), up to kMaxLookAhead blocks; a window of
+// kMaxLookAhead / 2 or more that is still short keeps its stop (slower,
+// never over a limit). Returns the largest window used, in blocks.
 std::size_t windowed_junction_speeds(const std::vector<PlannedSegment>& segs, std::vector<double>& J) {
   const std::size_t n = segs.size();
-  std::size_t e = 0, widest = 0;
   auto reach = [&](std::size_t k, double v) {  // from v at the end of segment k to its start
     return std::sqrt(v * v + 2 * segs[k].a_t * segs[k].geom.length);
   };
+  // The backward pass from a stop at e, with and without the limits on the
+  // way, at junctions base .. e (index j - base).
+  std::vector<double> vb, free_stop;
+  std::size_t base = 0, e = 0, widest = 0;
+  auto pass = [&](std::size_t from, std::size_t to) {
+    base = from, e = to;
+    vb.assign(e - base + 1, 0.0);
+    free_stop.assign(e - base + 1, 0.0);
+    for (std::size_t j = e; j-- > base;) {
+      vb[j - base] = std::min({J[j], segs[j].v_cap, reach(j, vb[j + 1 - base])});
+      free_stop[j - base] = reach(j, free_stop[j + 1 - base]);
+    }
+  };
   for (std::size_t k = 0; k < n; ++k) {
-    e = std::max(e, k + 1);
-    double vb = 0;
-    for (;;) {  // the backward pass from a stop at e down to junction k+1
-      vb = 0;
-      double free_stop = 0;  // the same without the limits on the way
-      for (std::size_t j = e; j-- > k + 1;) {
-        vb = std::min({J[j], segs[j].v_cap, reach(j, vb)});
-        free_stop = reach(j, free_stop);
-      }
-      if (e == n || free_stop > vb || e - k >= kMaxLookAhead) break;
-      ++e;
+    if (e < k + 1) pass(k + 1, k + 1);
+    for (;;) {
+      const std::size_t i = k + 1 - base;
+      if (e == n || free_stop[i] > vb[i] || e - k >= kMaxLookAhead / 2) break;
+      pass(k + 1, std::min({n, k + 1 + 2 * std::max<std::size_t>(e - k, 8), k + kMaxLookAhead}));
     }
     widest = std::max(widest, e - k);
-    J[k + 1] = vb;
+    J[k + 1] = vb[k + 1 - base];
     J[k] = std::min({J[k], segs[k].v_cap, reach(k, J[k + 1])});
     J[k + 1] = std::min(J[k + 1], reach(k, J[k]));
   }
