@@ -48,3 +48,15 @@ awk 'BEGIN { srand(1); print "G21 G90 G17 G64 P0.01\nG1 F3000"; x = 0; y = 0;
 size=$(wc -c < "$work/long.ngc")
 /usr/bin/time -f "%e s %M KB" "$contour" gcode "$work/long.ngc" > "$work/long.out" 2> "$work/long.time" || true
 echo "200000 short G1 lines ($((size / 1024 / 1024)) MB): $(grep -E '^total time|^program' "$work/long.out" | tr '\n' ' ') -- $(tail -1 "$work/long.time")"
+
+# A 50 MB program of short G1 segments (1.87 M lines of 0.1 mm, F3000, G64
+# P0.01): peak resident memory, cycles per second of the whole command, and
+# the widest look-ahead window the planner used.
+awk 'BEGIN { srand(1); print "G21 G90 G17 G64 P0.01\nG1 F3000"; x = 0; y = 0;
+  for (k = 0; k < 1870000; k++) { x += 0.1 * cos(k / 500); y += 0.1 * sin(k / 500) + 0.02 * (rand() - 0.5); printf "X%.4f Y%.4f Z%.4f\n", x, y, 0.01 * sin(k / 50) } }' > "$work/long50.ngc"
+size=$(wc -c < "$work/long50.ngc")
+/usr/bin/time -f "%e %M" "$contour" gcode "$work/long50.ngc" > "$work/long50.out" 2> "$work/long50.time" || true
+cycles=$(awk '/^program/ { for (i = 1; i <= NF; i++) if ($(i + 1) == "cycles") { print $i; exit } }' "$work/long50.out")
+window=$(awk '/^look-ahead/ { print $4; exit }' "$work/long50.out")
+read -r secs kb < <(tail -1 "$work/long50.time")
+echo "1870000 short G1 lines ($((size / 1000000)) MB), summary: $cycles cycles in $secs s ($(awk -v c="$cycles" -v s="$secs" 'BEGIN { printf "%.2f", c / s / 1e6 }') M cycles/s), peak $((kb / 1024)) MB resident, look-ahead window at most $window blocks"

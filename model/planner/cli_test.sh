@@ -26,7 +26,7 @@ awk -v t="$t" 'BEGIN { exit !(t >= 3.23 && t <= 3.26) }' && ok || bad "full circ
 
 # Summary text names every limit.
 sum=$("$contour" gcode "$work/paperb.ngc" --tol 0.05 --chord b --cycle 2 --accel 1764000)
-for w in "total time" "peak feed" "max chord err" "chord method b" "tolerance 0.05 um" "of 2 ms" "1764000"; do
+for w in "total time" "look-ahead     at most" "peak feed" "max chord err" "chord method b" "tolerance 0.05 um" "of 2 ms" "1764000"; do
   echo "$sum" | grep -q "$w" && ok || bad "summary lacks '$w'"
 done
 
@@ -42,6 +42,14 @@ awk -v v="$xv" 'BEGIN { exit !(v > 2900 && v <= 3000) }' && ok || bad "X peak ve
 head -1 "$work/p.csv" | grep -qx 't_s,x_mm,y_mm,z_mm,feed_mm_min,vx_mm_min,vy_mm_min,vz_mm_min' && ok || bad "csv header"
 cycles=$(echo "$json" | sed 's/.*"cycles": \([0-9]*\).*/\1/')
 [ "$(wc -l < "$work/p.csv")" -eq $((cycles + 2)) ] && ok || bad "csv rows $(wc -l < "$work/p.csv") for $cycles cycles"
+
+# The summary streams its samples (none kept) unless --csv or --svg keeps
+# them: both ways measure the same.
+printf 'G21 G64 P0.01\nG0 X50 Y0\nG1 F3000\n' > "$work/poly.ngc"
+awk 'BEGIN { for (k = 1; k <= 200; k++) printf "X%.4f Y%.4f Z%.4f\n", 50 * cos(k / 40), 50 * sin(k / 40), k / 100 }' >> "$work/poly.ngc"
+streamed=$("$contour" gcode "$work/poly.ngc" --format json) || bad "polyline json exit $?"
+kept=$("$contour" gcode "$work/poly.ngc" --format json --csv "$work/poly.csv") || bad "polyline json+csv exit $?"
+[ -n "$streamed" ] && [ "$streamed" = "$kept" ] && ok || bad "streamed summary differs from the kept one"
 
 # SVG: the five plots, each with a title and axis labels.
 "$contour" gcode "$work/paperb.ngc" --svg "$work/svg" > /dev/null || bad "svg exit"

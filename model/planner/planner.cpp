@@ -23,6 +23,8 @@ constexpr double kOffsetAccelShare = 0.005;          // radial offset jump at a 
 // acceleration at (1 - kCornerShare) of what its axes allow, leaving the
 // rest for the velocity step of passing the corner (planner.hpp, "Blending").
 constexpr double kCornerShare = 0.5;
+// The look-ahead window's bound, in blocks (planner.hpp, "Look-ahead").
+constexpr std::size_t kMaxLookAhead = std::size_t{1} << 16;
 
 void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument(what);
@@ -249,18 +251,50 @@ double junction_limit(const PlannedSegment& s1, const PlannedSegment& s2, const 
   return lim;
 }
 
-// Backward then forward pass over the junction speeds J (J[k]: start of
-// segment k, J[n] = 0): every block can reach its end speed.
-void reachable_junction_speeds(const std::vector<PlannedSegment>& segs, std::vector<double>& J) {
+// Junction speeds by look-ahead over a bounded window (planner.hpp,
+// "Look-ahead"). J[k]: the limit at the start of segment k on entry, the
+// planned speed on return (J[n] = 0). The speed at the end of block k is the
+// backward pass over segments k+1 .. e-1 from a stop at junction e (the
+// window's end), then the forward pass from J[k]. The window is long enough
+// when the pure deceleration from the stop at e (no limit on the way) is more
+// than the backward pass found at k+1: then nothing beyond e can lower
+// J[k+1], and the speed is the whole program's, bit for bit (min and
+// sqrt(x^2 + c) commute, both rounded monotonically). When it is not, the
+// window doubles (so the pass is recomputed about once per window's length
+// of blocks, not every block), up to kMaxLookAhead blocks; a window of
+// kMaxLookAhead / 2 or more that is still short keeps its stop (slower,
+// never over a limit). Returns the largest window used, in blocks.
+std::size_t windowed_junction_speeds(const std::vector<PlannedSegment>& segs, std::vector<double>& J) {
   const std::size_t n = segs.size();
-  for (std::size_t k = n; k-- > 0;) {
-    const PlannedSegment& s = segs[k];
-    J[k] = std::min({J[k], s.v_cap, std::sqrt(J[k + 1] * J[k + 1] + 2 * s.a_t * s.geom.length)});
-  }
+  auto reach = [&](std::size_t k, double v) {  // from v at the end of segment k to its start
+    return std::sqrt(v * v + 2 * segs[k].a_t * segs[k].geom.length);
+  };
+  // The backward pass from a stop at e, with and without the limits on the
+  // way, at junctions base .. e (index j - base).
+  std::vector<double> vb, free_stop;
+  std::size_t base = 0, e = 0, widest = 0;
+  auto pass = [&](std::size_t from, std::size_t to) {
+    base = from, e = to;
+    vb.assign(e - base + 1, 0.0);
+    free_stop.assign(e - base + 1, 0.0);
+    for (std::size_t j = e; j-- > base;) {
+      vb[j - base] = std::min({J[j], segs[j].v_cap, reach(j, vb[j + 1 - base])});
+      free_stop[j - base] = reach(j, free_stop[j + 1 - base]);
+    }
+  };
   for (std::size_t k = 0; k < n; ++k) {
-    const PlannedSegment& s = segs[k];
-    J[k + 1] = std::min(J[k + 1], std::sqrt(J[k] * J[k] + 2 * s.a_t * s.geom.length));
+    if (e < k + 1) pass(k + 1, k + 1);
+    for (;;) {
+      const std::size_t i = k + 1 - base;
+      if (e == n || free_stop[i] > vb[i] || e - k >= kMaxLookAhead / 2) break;
+      pass(k + 1, std::min({n, k + 1 + 2 * std::max<std::size_t>(e - k, 8), k + kMaxLookAhead}));
+    }
+    widest = std::max(widest, e - k);
+    J[k + 1] = vb[k + 1 - base];
+    J[k] = std::min({J[k], segs[k].v_cap, reach(k, J[k + 1])});
+    J[k + 1] = std::min(J[k + 1], reach(k, J[k]));
   }
+  return widest;
 }
 
 // The trapezoid of a block between its start and end speeds.
@@ -308,6 +342,7 @@ Plan plan(const std::vector<gcode::Block>& blocks, const Config& config) {
   const double T = config.cycle_s;
   const double eps = config.tol_mm * (1 - kTolMargin);
   const double amin = std::min({mc.amax.x, mc.amax.y, mc.amax.z});
+  p.segs.reserve(blocks.size());  // no growth slack: ~470 bytes a block
   for (const auto& b : blocks) p.segs.push_back(plan_segment(b, config, eps));
   reserve_corner_acceleration(p.segs);
 
@@ -321,7 +356,7 @@ Plan plan(const std::vector<gcode::Block>& blocks, const Config& config) {
     J[k] = junction_limit(p.segs[k - 1], p.segs[k], config, tol, amin);
   }
   p.junction_limit = J;
-  reachable_junction_speeds(p.segs, J);
+  p.lookahead_blocks = windowed_junction_speeds(p.segs, J);
   for (std::size_t k = 0; k < n; ++k) shape_trapezoid(p.segs[k], J[k], J[k + 1]);
   const double t = schedule(p.segs, T);
   p.total_time = t;
@@ -430,47 +465,65 @@ double chord_error(const Plan& plan, const Sample& a, const Sample& b) {
   return err;
 }
 
-Report analyse(const Plan& plan, const std::vector<Sample>& samples) {
-  Report r;
+Analyser::Analyser(const Plan& plan) : plan_(&plan) {
   const Config& c = plan.config;
-  const double T = c.cycle_s;
-  r.total_time_s = plan.total_time;
-  r.cycles = samples.empty() ? 0 : samples.size() - 1;
+  r_.total_time_s = plan.total_time;
   for (int i = 0; i < 3; ++i) {
-    r.axes[i].vmax = c.machine.vmax[i];
-    r.axes[i].amax = c.machine.amax[i];
+    r_.axes[i].vmax = c.machine.vmax[i];
+    r_.axes[i].amax = c.machine.amax[i];
   }
-  Vec3 v_prev;  // at rest before the first chord
-  for (std::size_t n = 1; n <= samples.size(); ++n) {
-    Vec3 v;  // at rest after the last chord
-    if (n < samples.size()) {
-      const Vec3 d = samples[n].p - samples[n - 1].p;
-      v = (1.0 / T) * d;
-      r.peak_feed = std::max(r.peak_feed, norm(d) / T);
-      const Sample &a = samples[n - 1], &b = samples[n];
-      const double err = chord_error(plan, a, b);
-      if (a.seg == b.seg || plan.junction_tol.empty()) {
-        r.max_chord_error = std::max(r.max_chord_error, err);
-      } else {  // a chord across one or more corners: within their blend tolerance
-        double lim = 0;
-        for (int k = a.seg + 1; k <= b.seg; ++k) lim = std::max(lim, plan.junction_tol[k]);
-        r.max_blend_error = std::max(r.max_blend_error, err);
-        r.blend_ok = r.blend_ok && err <= lim * (1 + kLimitRelTol);
-      }
-    }
-    for (int i = 0; i < 3; ++i) {
-      r.axes[i].peak_v = std::max(r.axes[i].peak_v, std::fabs(v[i]));
-      r.axes[i].peak_a = std::max(r.axes[i].peak_a, std::fabs(v[i] - v_prev[i]) / T);
-    }
-    v_prev = v;
+}
+
+void Analyser::step(const Vec3& v) {
+  const double T = plan_->config.cycle_s;
+  for (int i = 0; i < 3; ++i) {
+    r_.axes[i].peak_v = std::max(r_.axes[i].peak_v, std::fabs(v[i]));
+    r_.axes[i].peak_a = std::max(r_.axes[i].peak_a, std::fabs(v[i] - v_prev_[i]) / T);
   }
+  v_prev_ = v;
+}
+
+void Analyser::add(const Sample& b) {
+  if (count_++ == 0) {  // the start: no chord yet
+    prev_ = b;
+    return;
+  }
+  const Plan& plan = *plan_;
+  const double T = plan.config.cycle_s;
+  const Sample& a = prev_;
+  const Vec3 d = b.p - a.p;
+  r_.peak_feed = std::max(r_.peak_feed, norm(d) / T);
+  const double err = chord_error(plan, a, b);
+  if (a.seg == b.seg || plan.junction_tol.empty()) {
+    r_.max_chord_error = std::max(r_.max_chord_error, err);
+  } else {  // a chord across one or more corners: within their blend tolerance
+    double lim = 0;
+    for (int k = a.seg + 1; k <= b.seg; ++k) lim = std::max(lim, plan.junction_tol[k]);
+    r_.max_blend_error = std::max(r_.max_blend_error, err);
+    r_.blend_ok = r_.blend_ok && err <= lim * (1 + kLimitRelTol);
+  }
+  step((1.0 / T) * d);
+  prev_ = b;
+}
+
+Report Analyser::report() const {
+  Analyser last = *this;
+  if (count_ > 0) last.step(Vec3{});  // at rest after the last chord
+  Report r = last.r_;
+  r.cycles = count_ == 0 ? 0 : count_ - 1;
   constexpr double kSlack = 1 + kLimitRelTol;
-  r.tol_ok = r.max_chord_error <= c.tol_mm * kSlack;
+  r.tol_ok = r.max_chord_error <= plan_->config.tol_mm * kSlack;
   for (auto& ax : r.axes) {
     ax.v_ok = ax.peak_v <= ax.vmax * kSlack;
     ax.a_ok = ax.peak_a <= ax.amax * kSlack;
   }
   return r;
+}
+
+Report analyse(const Plan& plan, const std::vector<Sample>& samples) {
+  Analyser an(plan);
+  for (const Sample& s : samples) an.add(s);
+  return an.report();
 }
 
 }  // namespace contour::planner

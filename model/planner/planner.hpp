@@ -36,8 +36,14 @@
 // (the per-axis rule), for which feed lines with such a corner keep
 // kCornerShare = 1/2 of their axes' acceleration. A corner after a G61 /
 // G61.1 block, at a rapid (G0) or at a dwell or stop is an exact stop (as is
-// any corner whose tolerance rule gives 0). Look-ahead is over the whole
-// program (not a bounded window).
+// any corner whose tolerance rule gives 0).
+// Look-ahead: a block's end speed is planned from a window of the blocks
+// after it, ending in a stop, that grows until the stop's pure deceleration
+// distance is more than the speed found (so nothing past it can matter: the
+// plan is the whole program's, bit for bit), at most kMaxLookAhead = 65536
+// blocks (past that, the stop at the window's end is kept: slower, never
+// over a limit). The window is bounded; the Plan still holds every block
+// (the reader and the plan are not streamed yet).
 // Interpolation: the profile is sampled every cycle on one global clock
 // (blocks are not forced onto cycle boundaries, except that after an exact
 // stop the next block waits at rest for the next cycle, so that a sample
@@ -113,6 +119,7 @@ struct Plan {
   std::vector<double> junction_limit;  // per junction k (between segs k-1 and k), before the passes
   std::vector<double> junction_tol;    // per junction k: the path tolerance there (chord or blend), mm
   double total_time = 0;
+  std::size_t lookahead_blocks = 0;  // the widest look-ahead window used (Look-ahead, above)
 };
 
 // Plans a program. Throws std::invalid_argument for a bad configuration.
@@ -177,5 +184,22 @@ constexpr double kLimitRelTol = 1e-6;
 // (second difference / T^2), chord errors, against the configured limits,
 // each within kLimitRelTol.
 Report analyse(const Plan& plan, const std::vector<Sample>& samples);
+
+// The same measurement one sample at a time, so that the samples need not
+// be kept: add() each sample in order, then report(). analyse() is this.
+class Analyser {
+ public:
+  explicit Analyser(const Plan& plan);
+  void add(const Sample& s);
+  Report report() const;  // at rest after the last sample
+
+ private:
+  void step(const Vec3& v);  // one chord velocity (or rest)
+  const Plan* plan_;
+  Report r_;
+  Sample prev_;
+  Vec3 v_prev_;
+  std::size_t count_ = 0;
+};
 
 }  // namespace contour::planner

@@ -493,6 +493,99 @@ TEST(Junctions, LookAheadLimitsByDistance) {
   EXPECT_NEAR(q.segs[6].v_start, 100, 1e-9);  // 100^2 / (2 * 980) = 5.1 mm to reach it
 }
 
+// A long program: CAM polylines of short G1 segments (straight runs of 10 um
+// ones, so that the stopping distance spans a hundred blocks and more), long
+// fast lines, rapids, arcs and G61 stretches.
+std::string long_mixed_program(int blocks) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::string t = "G21 G90 G17 G64 P0.01\nG1 F3000\n";
+  double x = 0, y = 0, h = 0;
+  char b[128];
+  for (int k = 0; k < blocks; ++k) {
+    const int what = static_cast<int>(rng() % 100);
+    if (what < 2) {  // a long fast line
+      x += 100 * u(rng);
+      std::snprintf(b, sizeof b, "G1 X%.4f Y%.4f F9000\nF3000\n", x, y);
+    } else if (what < 3) {
+      x += 20 * u(rng), y += 20 * u(rng);
+      std::snprintf(b, sizeof b, "G0 X%.4f Y%.4f\nG1\n", x, y);
+    } else if (what < 4) {
+      std::snprintf(b, sizeof b, "G2 X%.4f Y%.4f I1 J0\nG1\n", x + 2, y);
+      x += 2;
+    } else if (what < 5) {
+      std::snprintf(b, sizeof b, "G%d\n", rng() % 2 ? 61 : 64);
+    } else if (what < 7) {  // 300 blocks straight on, 10 um each: a stop spans ~130
+      b[0] = 0;
+      for (int j = 0; j < 300; ++j, ++k) {
+        char l[64];
+        x += 0.01 * std::cos(h), y += 0.01 * std::sin(h);
+        std::snprintf(l, sizeof l, "X%.4f Y%.4f\n", x, y);
+        t += l;
+      }
+    } else {
+      h += 0.05 * u(rng);
+      x += 0.2 * std::cos(h), y += 0.2 * std::sin(h);
+      std::snprintf(b, sizeof b, "X%.4f Y%.4f\n", x, y);
+    }
+    t += b;
+  }
+  t += "G64 P0.01\n";  // the end: blended blocks up to the final stop
+  for (int j = 0; j < 50; ++j) {
+    char l[64];
+    x += 0.2, y += 0.002 * (j % 2);
+    std::snprintf(l, sizeof l, "X%.4f Y%.4f\n", x, y);
+    t += l;
+  }
+  return t;
+}
+
+// The oracle: the whole program's backward and forward passes over the
+// junction limits (written here, apart from the planner's windowed ones).
+// Returns the number of blocks whose planned speeds differ from it.
+std::size_t speeds_unlike_whole_program(const Plan& p) {
+  const std::size_t n = p.segs.size();
+  std::vector<double> J = p.junction_limit;  // J[n] = 0
+  for (std::size_t k = n; k-- > 0;) {
+    const auto& s = p.segs[k];
+    J[k] = std::min(std::min(J[k], s.v_cap), std::sqrt(J[k + 1] * J[k + 1] + 2 * s.a_t * s.geom.length));
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto& s = p.segs[k];
+    J[k + 1] = std::min(J[k + 1], std::sqrt(J[k] * J[k] + 2 * s.a_t * s.geom.length));
+  }
+  std::size_t differ = 0;
+  for (std::size_t k = 0; k < n; ++k) differ += p.segs[k].v_start != J[k] || p.segs[k].v_end != J[k + 1];
+  return differ;
+}
+
+TEST(LookAhead, WindowedPlanEqualsWholeProgram) {
+  const std::string text = long_mixed_program(40000);
+  const Plan p = plan_text(text.c_str());
+  const std::size_t n = p.segs.size();
+  ASSERT_GT(n, 30000u);
+  EXPECT_EQ(speeds_unlike_whole_program(p), 0u) << "blocks whose windowed speeds are not the whole program's";
+  // The window did look ahead (stopping distances over many 10 um blocks),
+  // and stayed far short of the program.
+  EXPECT_GT(p.lookahead_blocks, 100u);
+  EXPECT_LT(p.lookahead_blocks, n / 4);
+}
+
+// 1 um lines straight on at F9000: a stop spans ~11,500 blocks; the window
+// grows that far (by doubling) and the plan is still the whole program's.
+TEST(LookAhead, LongWindowOverTinyBlocks) {
+  std::string text = "G21 G90 G64 P0.01\nG1 F9000\n";
+  char l[64];
+  for (int k = 1; k <= 30000; ++k) {
+    std::snprintf(l, sizeof l, "X%.4f\n", k * 0.001);
+    text += l;
+  }
+  const Plan p = plan_text(text.c_str());
+  EXPECT_EQ(speeds_unlike_whole_program(p), 0u);
+  EXPECT_GT(p.lookahead_blocks, 11000u);
+  EXPECT_NEAR(p.segs[15000].v_end, 150.0, 1e-3);  // cruising at F9000 in the middle
+}
+
 TEST(ChordCap, FeedCappedByEachPlacement) {
   for (ChordMethod m : {ChordMethod::Inside, ChordMethod::Outside, ChordMethod::InsideOutside}) {
     Config c;

@@ -264,9 +264,11 @@ std::string read_text(const std::string& file, const std::string& what) {
   require_regular_file(file, what);
   std::ifstream in(file, std::ios::binary);
   if (!in) throw UsageError(what + "cannot read '" + file + "'");
-  std::stringstream buf;
-  buf << in.rdbuf();
-  return buf.str();
+  // One copy of the text (a stringstream would hold a second).
+  std::string text;
+  char buf[1 << 16];
+  while (in.read(buf, sizeof buf) || in.gcount() > 0) text.append(buf, static_cast<std::size_t>(in.gcount()));
+  return text;
 }
 
 gcode::ToolTable read_tool_table(const std::string& file) {
@@ -371,7 +373,7 @@ void print_json(const Request& q, const gcode::Program& prog, const planner::Pla
     << ", \"tolerance_mm\": " << c.tol_mm << ", \"chord_method\": \"" << planner::chord_name(c.chord)
     << "\", \"peak_feed_mm_min\": " << r.peak_feed * 60 << ", \"max_chord_error_mm\": " << r.max_chord_error
     << ", \"tolerance_ok\": " << (r.tol_ok ? "true" : "false") << ", \"blend_tolerance_mm\": " << c.blend_tol_mm
-    << ", \"max_blend_error_mm\": " << r.max_blend_error << ", \"blend_ok\": " << (r.blend_ok ? "true" : "false")
+    << ", \"lookahead_blocks\": " << plan.lookahead_blocks << ", \"max_blend_error_mm\": " << r.max_blend_error << ", \"blend_ok\": " << (r.blend_ok ? "true" : "false")
     << ", \"axes\": {";
   for (int i = 0; i < 3; ++i) {
     const auto& ax = r.axes[i];
@@ -407,6 +409,7 @@ void print_summary(const Request& q, const planner::Plan& plan, const planner::R
   std::printf("program        %s: %zu blocks, %zu cycles of %g ms\n", q.file.c_str(), plan.segs.size(), r.cycles,
               c.cycle_s * 1000);
   std::printf("total time     %.4f s\n", r.total_time_s);
+  std::printf("look-ahead     at most %zu blocks\n", plan.lookahead_blocks);
   std::printf("peak feed      %.1f mm/min\n", r.peak_feed * 60);
   std::printf("max chord err  %.4f um (tolerance %g um, chord method %s): %s\n", r.max_chord_error * 1000,
               c.tol_mm * 1000, planner::chord_name(c.chord), r.tol_ok ? "ok" : "EXCEEDED");
@@ -465,16 +468,25 @@ int run_gcode_command(const std::vector<std::string>& argv) {
     return 0;
   }
   const Request q = parse_request(a);
-  const gcode::Program prog = read_program(q.file, q.read);
+  gcode::Program prog = read_program(q.file, q.read);
   if (q.format == "moves") {
     print_moves(prog);
     return 0;
   }
   const planner::Plan plan = plan_program(q.file, prog.blocks, q.config);
-  const auto samples = planner::interpolate(plan);
-  if (q.pulses) return print_pulses(q, samples);
+  std::vector<gcode::Block>().swap(prog.blocks);  // the plan has what the output needs
+  if (q.pulses) return print_pulses(q, planner::interpolate(plan));
 
-  const planner::Report r = planner::analyse(plan, samples);
+  // The samples are kept only for --csv and --svg; the summary streams them.
+  const bool keep = a.option("csv") || a.option("svg");
+  std::vector<planner::Sample> samples;
+  planner::Analyser an(plan);
+  planner::Interpolator it(plan);
+  for (planner::Sample s; it.next(s);) {
+    an.add(s);
+    if (keep) samples.push_back(s);
+  }
+  const planner::Report r = an.report();
   if (auto p = a.option("csv")) write_csv(*p, samples, q.config.cycle_s);
   int svg_files = 0;
   if (auto d = a.option("svg")) svg_files = write_svgs(*d, q.file, plan, samples);
