@@ -4,6 +4,8 @@ namespace contour::board {
 
 namespace {
 
+constexpr unsigned kMaxLenRefusals = 16;  // LEN refusals in a row before the host gives up
+
 std::size_t count_reads(const std::vector<Op>& ops) {
   std::size_t n = 0;
   for (const Op& o : ops) n += o.write ? 0 : 1;
@@ -44,6 +46,16 @@ void LinkClient::check_dead() {
                     std::to_string(stats_.frames) + " frames sent)");
 }
 
+// A LEN refusal: the host's frames are always of a legal length, so one on
+// the wire was cut or merged with the next (a dropped END byte): sent again
+// like a CRC refusal. Many in a row, with no OK reply between, are the
+// host's own error and end the run.
+void LinkClient::refuse_len(const Reply& r, std::uint8_t seq) {
+  if (++len_refusals_ <= kMaxLenRefusals) return;
+  throw LinkError("the board refused frame " + std::to_string(seq) + ": " + status_name(r.status) + " at byte " +
+                  std::to_string(r.detail) + " (" + std::to_string(kMaxLenRefusals) + " times in a row)");
+}
+
 // A valid reply: everything before the board's next expected number is
 // done; a SEQ refusal of a frame sent since the last go-back starts another.
 void LinkClient::handle(const Reply& r) {
@@ -52,9 +64,11 @@ void LinkClient::handle(const Reply& r) {
   if (on_reply) on_reply(r);
   if (r.flag(BOARD_FLAG_REJECT))
     throw LinkError("the board refused a chord or block: its queue was full (STATUS.REJECT)");
-  if (r.status == BOARD_ERR_LEN || r.status == BOARD_ERR_REG)
+  if (r.status == BOARD_ERR_REG)
     throw LinkError("the board refused frame " + std::to_string(r.seq) + ": " + status_name(r.status) +
                     " at byte " + std::to_string(r.detail));
+  if (r.status == BOARD_ERR_LEN) refuse_len(r, r.seq);
+  if (r.status == BOARD_ERR_OK) len_refusals_ = 0;
   if (r.status != BOARD_ERR_OK) ++stats_.refused;
   bool stale = true;
   for (const Frame& f : out_)
@@ -140,9 +154,10 @@ std::optional<Reply> LinkClient::transact_reply(const Reply& r, std::uint8_t seq
   if (r.status == BOARD_ERR_SEQ && writes)
     throw LinkError("sequence out of step: the board expects frame " + std::to_string(r.next_seq) +
                     ", the host sent " + std::to_string(seq) + " (was the board reset?)");
-  if (r.status == BOARD_ERR_LEN || r.status == BOARD_ERR_REG)
+  if (r.status == BOARD_ERR_REG)
     throw LinkError("the board refused frame " + std::to_string(seq) + ": " + status_name(r.status) + " at byte " +
                     std::to_string(r.detail));
+  if (r.status == BOARD_ERR_LEN) refuse_len(r, seq);
   ++stats_.refused;
   return std::nullopt;
 }

@@ -92,6 +92,9 @@ class LinkClient {
   double last_valid_ = 0;
   Reply last_;
   LinkStats stats_;
+  unsigned len_refusals_ = 0;  // LEN refusals since the last OK reply
+
+  void refuse_len(const Reply& r, std::uint8_t seq);
 };
 
 }  // namespace contour::board
