@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cctype>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -277,5 +278,17 @@ TEST(Cli, HelpListsCommandsAndEngines) {
   expect_success_printing("arc --help", {"--engine E", "model"});
 }
 
+// A waveform asked for that cannot be written is an error naming the file
+// (it was silently ignored).
+TEST(Cli, UnwritableWaveformIsAnError) {
+  ::setenv("CONTOUR_FST", "/nonexistent-dir/x.fst", 1);
+  const ProcessResult o = contour("line 6 5 --engine core");
+  ::unsetenv("CONTOUR_FST");
+  EXPECT_EQ(o.status, 2) << o.err;
+  EXPECT_NE(o.err.find("cannot write the waveform file '/nonexistent-dir/x.fst'"), std::string::npos) << o.err;
+  EXPECT_TRUE(o.out.empty()) << o.out;
+}
+
 }  // namespace
+
 }  // namespace contour::test

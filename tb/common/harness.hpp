@@ -22,6 +22,8 @@
 
 #include <verilated.h>
 #include <verilated_fst_c.h>
+
+#include <stdexcept>
 #if VM_COVERAGE
 #include <verilated_cov.h>
 
@@ -73,6 +75,8 @@ class Harness {
       trace_ = std::make_unique<VerilatedFstC>();
       top_->trace(trace_.get(), 99);
       trace_->open(fst_path.c_str());
+      // A waveform asked for and not written is bad input, not silence.
+      if (!trace_->isOpen()) throw std::runtime_error("cannot write the waveform file '" + fst_path + "' (CONTOUR_FST or --trace)");
     }
     top_->i_clk = 0;
     top_->eval();
