@@ -47,13 +47,13 @@ module board_top #(
   wire [31:0] m_dat_w, m_dat_r;
   wire [8:0] txq_in, txq_out;
   wire txq_push, txq_full, txq_valid, txq_pop;
-  wire hold, stopped, frame_ok, refused;
+  wire hold, stopped, frame_ok, refused, pins;
   link_ctrl #(.MAX(64)) u_ctl (
       .i_clk(i_clk), .i_rst(i_rst), .i_done(fr_done), .i_bank(fr_bank), .i_len(fr_len),
       .i_crc_ok(fr_crc_ok), .i_bad(fr_bad), .o_busy(ctl_busy), .o_rd_addr(rd_addr), .i_rd_data(rd_data),
       .o_wb_cyc(m_cyc), .o_wb_we(m_we), .o_wb_adr(m_adr), .o_wb_dat(m_dat_w), .i_wb_dat(m_dat_r),
       .i_wb_ack(m_ack), .o_tx_data(txq_in), .o_tx_push(txq_push), .i_tx_full(txq_full),
-      .i_hold(hold), .i_stopped(stopped), .i_wdog(o_wdog), .o_frame_ok(frame_ok), .o_refused(refused)
+      .i_hold(hold), .i_stopped(stopped), .i_wdog(o_wdog), .i_pins(pins), .o_frame_ok(frame_ok), .o_refused(refused)
   );
 
   wire [9:0] unused_txq_level;
@@ -88,7 +88,7 @@ module board_top #(
   assign m_dat_r = sel_i ? dat_i : sel_3 ? dat_3 : dat_l;
   assign m_ack = ack_i | ack_3 | ack_l;
 
-  wire ce, enable, pins;
+  wire ce, enable;
   board_ctl u_bctl (
       .i_clk(i_clk), .i_rst(i_rst), .i_wb_cyc(m_cyc & sel_l), .i_wb_stb(m_cyc & sel_l), .i_wb_we(m_we),
       .i_wb_adr(s_adr), .i_wb_dat(m_dat_w), .o_wb_dat(dat_l), .o_wb_ack(ack_l),

@@ -11,9 +11,12 @@
 //      number (ERR_SEQ), or the previous one (ERR_DUP: done already, its
 //      reply was lost); a frame of reads only is done with any number;
 //   4. the ops in order, the reads' data into the reply;
-//   5. the trailer: the two queue levels and the flags, read from the
-//      peripherals' STATUS registers over the bus, and the next expected
-//      sequence number.
+//   5. the trailer, laid out by board.def's REPLY lines (REPLY_* of
+//      board_proto.vh): the two queue levels and the flags, read from the
+//      peripherals' STATUS registers over the bus; the positions of the
+//      axes the STEP/DIR pins show (X and Y of interp3_top, or of
+//      interp_top when i_pins; Z of interp3_top), each read over the bus
+//      when its bytes are due; the next expected sequence number.
 // Reply: seq, status, (detail if refused), read data, trailer. A refused
 // frame writes nothing. Bus: word addresses (7 bits), classic cycles.
 `default_nettype none
@@ -47,6 +50,7 @@ module link_ctrl #(
     input  wire        i_hold,
     input  wire        i_stopped,
     input  wire        i_wdog,
+    input  wire        i_pins,     // LINK CTRL.PINS: X and Y pins from interp_top
     // One clock at each frame done (OK) / refused
     output reg         o_frame_ok,
     output reg         o_refused
@@ -54,12 +58,9 @@ module link_ctrl #(
 
 `include "board_proto.vh"
 
-  localparam [6:0] W_INTERP_STATUS = 7'h03;  // INTERP window, STATUS (0x0C)
-  localparam [6:0] W_AXIS3_STATUS = 7'h23;   // AXIS3 window, STATUS (0x0C)
-
   localparam [3:0] S_IDLE = 4'd0, S_FETCH = 4'd1, S_SEQ = 4'd2, S_SCAN = 4'd3, S_HEAD = 4'd4,
                    S_OP = 4'd5, S_WDAT = 4'd6, S_BUS = 4'd7, S_RDAT = 4'd8, S_TRAIL_BUS = 4'd9,
-                   S_TRAIL = 4'd10;
+                   S_TRAIL = 4'd10, S_TRAIL_POS = 4'd11;
 
   reg [3:0] state_q, ret_q;
   reg bank_q;
@@ -71,12 +72,13 @@ module link_ctrl #(
   reg [7:0] det_q;   // error detail: the op's byte index
   reg has_wr_q;
   reg [6:0] op_q;    // the write op's word address
-  reg [2:0] k_q;     // byte counter in a word, trailer byte counter
+  reg [4:0] k_q;     // byte counter in a word, trailer byte counter
   reg [31:0] data_q; // write data collected / read data to send
   reg [1:0] hb_q;    // header byte counter
   reg [7:0] lvl3_q, lvl2_q;
   reg rej_q;
   reg trail_rd_q;    // which STATUS the trailer reads: 0 AXIS3, 1 INTERP
+  reg pos_rd_q;      // the position of the field at k_q is in data_q
 
   wire [7:0] end_idx = len_q - 8'd2;  // the first CRC byte
   wire [6:0] op_adr = i_rd_data[6:0];
@@ -84,6 +86,16 @@ module link_ctrl #(
 
   assign o_busy = (state_q != S_IDLE);
   assign o_rd_addr = (bank_q ? MAX[7:0] : 8'd0) + idx_q;  // bank * MAX + index
+
+  // The trailer's fields by byte index k_q (board.def's REPLY lines; the
+  // positions are 4-byte fields, the others 1 byte).
+  localparam [4:0] T_LAST = REPLY_TRAILER[4:0] - 5'd1;
+  localparam [4:0] T_PX = REPLY_POS_X[4:0], T_PY = REPLY_POS_Y[4:0], T_PZ = REPLY_POS_Z[4:0];
+  wire pos_start = k_q == T_PX || k_q == T_PY || k_q == T_PZ;
+  wire in_pos = (k_q >= T_PX && k_q < T_PX + 5'd4) || (k_q >= T_PY && k_q < T_PY + 5'd4) ||
+                (k_q >= T_PZ && k_q < T_PZ + 5'd4);
+  wire [6:0] pos_adr = k_q == T_PX ? (i_pins ? W_INTERP_POS_X : W_AXIS3_POS_X) :
+                       k_q == T_PY ? (i_pins ? W_INTERP_POS_Y : W_AXIS3_POS_Y) : W_AXIS3_POS_Z;
 
   // Reply byte of the header and the trailer.
   reg [7:0] head_byte, trail_byte;
@@ -93,12 +105,12 @@ module link_ctrl #(
       2'd1: head_byte = {5'd0, err_q};
       default: head_byte = det_q;
     endcase
-    case (k_q)
-      3'd0: trail_byte = lvl3_q;
-      3'd1: trail_byte = lvl2_q;
-      3'd2: trail_byte = {4'd0, i_wdog, i_stopped, i_hold, rej_q};
-      default: trail_byte = exp_q;
-    endcase
+    if (in_pos) trail_byte = data_q[31:24];
+    else if (k_q == REPLY_LEVEL3[4:0]) trail_byte = lvl3_q;
+    else if (k_q == REPLY_LEVEL2[4:0]) trail_byte = lvl2_q;
+    else if (k_q == REPLY_FLAGS[4:0]) trail_byte = {4'd0, i_wdog, i_stopped, i_hold, rej_q};
+    else if (k_q == REPLY_NEXT_SEQ[4:0]) trail_byte = exp_q;
+    else trail_byte = 8'd0;
   end
 
   // The frame engine.
@@ -118,13 +130,14 @@ module link_ctrl #(
       det_q <= 8'd0;
       has_wr_q <= 1'b0;
       op_q <= 7'd0;
-      k_q <= 3'd0;
+      k_q <= 5'd0;
       data_q <= 32'd0;
       hb_q <= 2'd0;
       lvl3_q <= 8'd0;
       lvl2_q <= 8'd0;
       rej_q <= 1'b0;
       trail_rd_q <= 1'b0;
+      pos_rd_q <= 1'b0;
       o_wb_cyc <= 1'b0;
       o_wb_we <= 1'b0;
       o_wb_adr <= 7'd0;
@@ -199,7 +212,7 @@ module link_ctrl #(
         // Execute: each op in order.
         S_OP: begin
           op_q <= i_rd_data[6:0];
-          k_q <= 3'd0;
+          k_q <= 5'd0;
           if (op_wr) begin
             idx_q <= idx_q + 8'd1;
             ret_q <= S_WDAT;
@@ -213,8 +226,8 @@ module link_ctrl #(
         end
         S_WDAT: begin
           data_q <= {data_q[23:0], i_rd_data};
-          k_q <= k_q + 3'd1;
-          if (k_q == 3'd3) begin
+          k_q <= k_q + 5'd1;
+          if (k_q == 5'd3) begin
             o_wb_cyc <= 1'b1;
             o_wb_we <= 1'b1;
             o_wb_adr <= op_q;
@@ -229,7 +242,7 @@ module link_ctrl #(
         S_BUS: if (i_wb_ack) begin
           o_wb_cyc <= 1'b0;
           data_q <= i_wb_dat;
-          k_q <= 3'd0;
+          k_q <= 5'd0;
           if (!o_wb_we) state_q <= S_RDAT;
           else begin
             idx_q <= idx_q + 8'd1;
@@ -241,8 +254,8 @@ module link_ctrl #(
           o_tx_data <= {1'b0, data_q[31:24]};
           o_tx_push <= 1'b1;
           data_q <= {data_q[23:0], 8'd0};
-          k_q <= k_q + 3'd1;
-          if (k_q == 3'd3) begin
+          k_q <= k_q + 5'd1;
+          if (k_q == 5'd3) begin
             idx_q <= idx_q + 8'd1;
             ret_q <= S_OP;
             state_q <= (idx_q + 8'd1 >= end_idx) ? S_TRAIL_BUS : S_FETCH;
@@ -265,15 +278,30 @@ module link_ctrl #(
               rej_q <= rej_q | i_wb_dat[4];
             end
             trail_rd_q <= ~trail_rd_q;
-            k_q <= 3'd0;
+            k_q <= 5'd0;
+            pos_rd_q <= 1'b0;
             if (trail_rd_q) state_q <= S_TRAIL;
           end
         end
-        S_TRAIL: if (!i_tx_full) begin
-          o_tx_data <= {k_q == 3'd3, trail_byte};
+        // The trailer's bytes; a position is read over the bus at its first byte.
+        S_TRAIL: if (pos_start && !pos_rd_q) begin
+          o_wb_cyc <= 1'b1;
+          o_wb_we <= 1'b0;
+          o_wb_adr <= pos_adr;
+          state_q <= S_TRAIL_POS;
+        end else if (!i_tx_full) begin
+          o_tx_data <= {k_q == T_LAST, trail_byte};
           o_tx_push <= 1'b1;
-          k_q <= k_q + 3'd1;
-          if (k_q == 3'd3) state_q <= S_IDLE;
+          if (in_pos) data_q <= {data_q[23:0], 8'd0};
+          pos_rd_q <= 1'b0;
+          k_q <= k_q + 5'd1;
+          if (k_q == T_LAST) state_q <= S_IDLE;
+        end
+        S_TRAIL_POS: if (i_wb_ack) begin
+          o_wb_cyc <= 1'b0;
+          data_q <= i_wb_dat;
+          pos_rd_q <= 1'b1;
+          state_q <= S_TRAIL;
         end
         default: state_q <= S_IDLE;
       endcase

@@ -72,27 +72,42 @@ Bytes make_request(std::uint8_t seq, const std::vector<Op>& ops) {
   return slip_encode(f);
 }
 
+namespace {
+
+std::uint32_t be32(const std::uint8_t* p) {
+  return std::uint32_t{p[0]} << 24 | std::uint32_t{p[1]} << 16 | std::uint32_t{p[2]} << 8 | p[3];
+}
+
+// The trailer's fields (board.def's REPLY lines) from its first byte.
+void parse_trailer(const std::uint8_t* t, Reply& r) {
+  static_assert(BOARD_REPLY_POS_X_BYTES == 4 && BOARD_REPLY_POS_Y_BYTES == 4 && BOARD_REPLY_POS_Z_BYTES == 4);
+  r.level3 = t[BOARD_REPLY_LEVEL3];
+  r.level2 = t[BOARD_REPLY_LEVEL2];
+  r.flags = t[BOARD_REPLY_FLAGS];
+  r.pos = {static_cast<std::int32_t>(be32(t + BOARD_REPLY_POS_X)), static_cast<std::int32_t>(be32(t + BOARD_REPLY_POS_Y)),
+           static_cast<std::int32_t>(be32(t + BOARD_REPLY_POS_Z))};
+  r.next_seq = t[BOARD_REPLY_NEXT_SEQ];
+}
+
+}  // namespace
+
 std::optional<Reply> parse_reply(const Bytes& f) {
-  // seq, status, [detail | data], trailer (4), CRC (2)
-  if (f.size() < 8 || crc16(f.data(), f.size()) != 0) return std::nullopt;
+  // seq, status, [detail | data], trailer, CRC (2)
+  constexpr std::size_t kFixed = 2 + BOARD_REPLY_TRAILER + 2;
+  if (f.size() < kFixed || crc16(f.data(), f.size()) != 0) return std::nullopt;
   Reply r;
   r.seq = f[0];
   r.status = f[1];
-  std::size_t body = f.size() - 8;
+  const std::size_t body = f.size() - kFixed;
   std::size_t at = 2;
   if (r.status != BOARD_ERR_OK) {
     if (body != 1) return std::nullopt;
     r.detail = f[at++];
   } else {
     if (body % 4 != 0) return std::nullopt;
-    for (std::size_t k = 0; k < body / 4; ++k, at += 4)
-      r.data.push_back(std::uint32_t{f[at]} << 24 | std::uint32_t{f[at + 1]} << 16 | std::uint32_t{f[at + 2]} << 8 |
-                       f[at + 3]);
+    for (std::size_t k = 0; k < body / 4; ++k, at += 4) r.data.push_back(be32(&f[at]));
   }
-  r.level3 = f[at];
-  r.level2 = f[at + 1];
-  r.flags = f[at + 2];
-  r.next_seq = f[at + 3];
+  parse_trailer(&f[at], r);
   return r;
 }
 

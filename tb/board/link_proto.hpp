@@ -6,6 +6,7 @@
 // used by `contour stream`, `contour board-sim` and the tests.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -55,12 +56,14 @@ struct Reply {
   std::vector<std::uint32_t> data;      // the reads' words, in order
   std::uint8_t level3 = 0, level2 = 0;  // chord queue, block queue
   std::uint8_t flags = 0;
+  std::array<std::int32_t, 3> pos{};    // X, Y, Z of the STEP/DIR pins' peripheral (board.def REPLY POS_*)
   std::uint8_t next_seq = 0;            // the sequence number the board expects next
   bool flag(unsigned bit) const { return (flags >> bit) & 1u; }
 };
 
 // Parses an unescaped reply frame; nullopt if its CRC or length is wrong
-// (a status OK reply has 4 bytes for each read op of its request).
+// (a status OK reply has 4 bytes for each read op of its request). The
+// trailer's layout is board.def's REPLY lines (BOARD_REPLY_*).
 std::optional<Reply> parse_reply(const Bytes& frame);
 
 // "OK", "CRC", "LEN", "REG", "SEQ", "DUP", or the number.

@@ -2,6 +2,8 @@
 // value, SLIP round trips, requests and replies byte by byte.
 #include <gtest/gtest.h>
 
+#include <climits>
+#include <cstdint>
 #include <string>
 
 #include "link_proto.hpp"
@@ -50,7 +52,8 @@ TEST(LinkProto, RequestLayoutIsSeqOpsCrcBigEndian) {
 }
 
 TEST(LinkProto, ReplyParsesAndRefusesABadCrc) {
-  Bytes f{3, 0, 0xDE, 0xAD, 0xBE, 0xEF, 5, 1, 0x02, 4};
+  // seq, status, read data, levels, flags, positions X Y Z (big-endian), next seq
+  Bytes f{3, 0, 0xDE, 0xAD, 0xBE, 0xEF, 5, 1, 0x02, 0, 0, 1, 2, 0xFF, 0xFF, 0xFF, 0xFE, 0x80, 0, 0, 0, 4};
   const std::uint16_t c = crc16(f.data(), f.size());
   f.push_back(static_cast<std::uint8_t>(c >> 8));
   f.push_back(static_cast<std::uint8_t>(c));
@@ -62,6 +65,9 @@ TEST(LinkProto, ReplyParsesAndRefusesABadCrc) {
   EXPECT_EQ(r->level3, 5);
   EXPECT_EQ(r->level2, 1);
   EXPECT_TRUE(r->flag(BOARD_FLAG_HOLD));
+  EXPECT_EQ(r->pos[0], 258);
+  EXPECT_EQ(r->pos[1], -2);
+  EXPECT_EQ(r->pos[2], INT32_MIN);
   EXPECT_EQ(r->next_seq, 4);
   f[2] ^= 0x10;
   EXPECT_FALSE(parse_reply(f));

@@ -19,9 +19,18 @@ constexpr std::uint32_t kEnable = 1u << BOARD_LINK_CTRL_ENABLE_LSB;
 
 std::int64_t to_signed(std::uint32_t v) { return static_cast<std::int32_t>(v); }
 
+std::array<std::int64_t, 3> reply_positions(const Reply& r) { return {r.pos[0], r.pos[1], r.pos[2]}; }
+
+// The positions at rest: every reply carries them (board.def REPLY POS_*);
+// the POS registers read in the same frame must agree.
 std::array<std::int64_t, 3> read_positions(LinkClient& link) {
   const Reply r = link.transact({rd(BOARD_AXIS3_POS_X), rd(BOARD_AXIS3_POS_Y), rd(BOARD_AXIS3_POS_Z)});
-  return {to_signed(r.data[0]), to_signed(r.data[1]), to_signed(r.data[2])};
+  const std::array<std::int64_t, 3> regs{to_signed(r.data[0]), to_signed(r.data[1]), to_signed(r.data[2])};
+  if (regs != reply_positions(r))
+    throw LinkError("the reply's positions " + std::to_string(r.pos[0]) + " " + std::to_string(r.pos[1]) + " " +
+                    std::to_string(r.pos[2]) + " differ from the POS registers " + std::to_string(regs[0]) + " " +
+                    std::to_string(regs[1]) + " " + std::to_string(regs[2]));
+  return regs;
 }
 
 // The ops that queue one chord: the packed word if it fits, else the
@@ -54,7 +63,7 @@ struct Run {
   std::size_t depth = 0, next = 0;
   unsigned width = 0;  // the board's chord magnitude width
   bool running = false, wdog_seen = false, resume_posted = false;
-  double last_post = 0, last_prog = -1;
+  double last_post = 0;
   Progress prog;
   StreamResult res;
 };
@@ -69,7 +78,7 @@ void post_chords(Run& r, Transport& t) {
     std::vector<Op> c = chord_ops(r.chords[r.next], r.next, r.cfg, r.width);
     std::vector<Op> trial = ops;
     trial.insert(trial.end(), c.begin(), c.end());
-    if (request_size(trial) + 5 + 3 > BOARD_MAX_FRAME) break;  // room for CTRL and 3 reads
+    if (request_size(trial) + 5 > BOARD_MAX_FRAME) break;  // room for CTRL
     ops = trial;
     ++k;
     ++r.next;
@@ -79,10 +88,6 @@ void post_chords(Run& r, Transport& t) {
     r.running = true;
   }
   if (ops.empty()) return;
-  if (t.now_s() - r.last_prog >= r.cfg.progress_s && request_size(ops) + 3 <= BOARD_MAX_FRAME) {
-    ops.insert(ops.end(), {rd(BOARD_AXIS3_POS_X), rd(BOARD_AXIS3_POS_Y), rd(BOARD_AXIS3_POS_Z)});
-    r.last_prog = t.now_s();
-  }
   r.link.post(ops, k);
   r.last_post = t.now_s();
 }
@@ -95,20 +100,22 @@ void post_service(Run& r, Transport& t) {
     ++r.res.wdog_trips;
     r.last_post = t.now_s();
   } else if (t.now_s() - r.last_post > 0.02 && r.link.in_flight() == 0) {
-    r.link.post({wr(BOARD_LINK_WDOG, r.cfg.wdog_clocks), rd(BOARD_AXIS3_POS_X), rd(BOARD_AXIS3_POS_Y),
-                 rd(BOARD_AXIS3_POS_Z)},
-                0);
-    r.last_prog = r.last_post = t.now_s();
+    r.link.post({wr(BOARD_LINK_WDOG, r.cfg.wdog_clocks)}, 0);  // a keepalive; its reply has the positions
+    r.last_post = t.now_s();
   }
 }
 
-// Feed hold, wait for rest, then drop the queue.
-void stop_motion(Run& r) {
+// Feed hold, wait for rest (the ramp: 65536 * RAMP clocks, 49 ms), then
+// drop the queue.
+void stop_motion(Run& r, Transport& t) {
   r.link.drain();
   r.link.transact({wr(BOARD_LINK_CTRL, kEnable | (1u << BOARD_LINK_CTRL_HOLD_LSB))});
+  const double t0 = t.now_s();
   for (;;) {
     const Reply s = r.link.transact({rd(BOARD_LINK_STATUS)});
     if ((s.data[0] >> BOARD_LINK_STATUS_STOPPED_LSB) & 1u) break;
+    if (t.now_s() - t0 > r.cfg.rest_s)
+      throw LinkError("the board did not come to rest within " + std::to_string(r.cfg.rest_s) + " s of a feed hold");
   }
   r.link.transact({wr(BOARD_AXIS3_CTRL, 1u << BOARD_AXIS3_CTRL_ABORT_LSB), wr(BOARD_LINK_CTRL, 0)});
   r.res.stopped = true;
@@ -166,15 +173,13 @@ StreamResult stream_chords(LinkClient& link, Transport& t, const std::vector<Cho
     r.res.expected[2] += c.dz;
   }
   r.prog.total = chords.size();
+  r.prog.pos = r.res.start;
   link.on_reply = [&](const Reply& rep) {
     r.wdog_seen = rep.flag(BOARD_FLAG_WDOG);
     if (!r.wdog_seen) r.resume_posted = false;
     r.prog.level = rep.level3;
-  };
-  link.on_data = [&](const Reply& rep) {
-    if (rep.data.size() < 3) return;
-    const std::size_t n = rep.data.size();
-    for (int a = 0; a < 3; ++a) r.prog.pos[a] = to_signed(rep.data[n - 3 + a]);
+    r.prog.pos = reply_positions(rep);
+    ++r.prog.replies;
   };
   r.last_post = t.now_s();
   while (r.next < chords.size() || link.in_flight() != 0) {
@@ -185,10 +190,9 @@ StreamResult stream_chords(LinkClient& link, Transport& t, const std::vector<Cho
     r.prog.sent = r.next;
     if (progress) progress(r.prog);
   }
-  if (stop && stop->load()) stop_motion(r);
+  if (stop && stop->load()) stop_motion(r, t);
   else finish(r);
   link.on_reply = nullptr;
-  link.on_data = nullptr;
   r.res.end = read_positions(link);
   r.res.chords = read_word(link, BOARD_AXIS3_CHORDS) - chords0;
   r.res.underruns = read_word(link, BOARD_AXIS3_UNDERRUNS);

@@ -2,7 +2,7 @@
 // AXIS3) over the link: the queue is kept filled (never past its depth:
 // the host counts the level of the last reply and the chords in flight),
 // RUN is set once the queue is full, DRAIN after the last chord; positions
-// are read back as it runs; a tripped watchdog is reported and resumed; a
+// come back in every reply; a tripped watchdog is reported and resumed; a
 // stop request brings the motion to rest along its path (feed hold) and
 // then stops. Transport-agnostic: `contour stream` runs it on a serial
 // port, the tests on the simulated board.
@@ -29,13 +29,14 @@ struct StreamConfig {
   std::uint32_t step_space = 12;      // STEP low between steps, clocks
   std::uint32_t wdog_clocks = 600000;  // 50 ms
   std::size_t chords_per_frame = 11;  // fits MAX_FRAME with packed chords
-  double progress_s = 0.05;           // position readback interval (transport clock)
+  double rest_s = 10;                 // a feed hold must bring the board to rest within this (transport clock)
 };
 
 struct Progress {
   std::size_t sent = 0, total = 0;
-  std::array<std::int64_t, 3> pos{};
+  std::array<std::int64_t, 3> pos{};  // the position of the latest reply (every reply carries it)
   unsigned level = 0;
+  std::uint64_t replies = 0;
 };
 
 struct StreamResult {
