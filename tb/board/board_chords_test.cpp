@@ -107,6 +107,32 @@ TEST(BoardChords, FlippedBitsAndDroppedBytesAreMendedByResends) {
   EXPECT_GT(o.res.link.resends, 0u);
 }
 
+// Every reply carries the position of the pins' axes (board.def REPLY
+// POS_*): while it runs it is the pins' net at some clock of the last 1 ms
+// before the reply reached the host (read on the board, then sent); at
+// rest, exactly the pins' net.
+TEST(BoardChords, EveryReplyCarriesThePinsPositions) {
+  const std::vector<Chord3> chords(300, Chord3{30, -20, 10});
+  BoardSim sim;
+  SimTransport t(sim);
+  LinkClient link(t);
+  std::uint64_t seen = 0, checked = 0;
+  auto check = [&](const Progress& p) {
+    if (p.replies == seen) return;
+    seen = p.replies;
+    const std::uint64_t now = sim.clocks(), back = 12000;
+    for (int a = 0; a < 3; ++a)
+      EXPECT_TRUE(pins_net_seen(sim.steps(), a, now > back ? now - back : 0, now, p.pos[a]))
+          << "reply " << seen << " axis " << a << ": " << p.pos[a] << ", pins " << pins_net(sim.steps(), now)[a];
+    ++checked;
+  };
+  const StreamResult r = stream_chords(link, t, chords, {}, check);
+  EXPECT_GT(checked, 30u);
+  EXPECT_EQ(r.end, (std::array<std::int64_t, 3>{9000, -6000, 3000}));
+  EXPECT_EQ(pins_net(sim.steps()), r.end);
+  EXPECT_EQ(link.last().pos, (std::array<std::int32_t, 3>{9000, -6000, 3000}));
+}
+
 // Steps in [t0, t1) seconds of the run.
 std::size_t steps_in(const std::vector<StepEvent>& s, double t0, double t1) {
   return static_cast<std::size_t>(std::count_if(s.begin(), s.end(), [&](const StepEvent& e) {

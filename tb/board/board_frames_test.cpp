@@ -150,5 +150,37 @@ TEST(BoardFrames, EmptyFramesAndNoiseBeforeAFrameAreIgnored) {
   EXPECT_EQ(r2->data[0], 0x4C4E4B31u);
 }
 
+// With LINK CTRL.PINS the X and Y pins are interp_top's, and so are the
+// replies' X and Y positions: a line of -300, +200 steps on interp_top.
+TEST(BoardFrames, RepliesCarryInterpTopsPositionsWhenItHasThePins) {
+  BoardSim sim;
+  auto wr = [](std::uint8_t w, std::uint32_t d) { return Op{true, w, d}; };
+  Reply r = ask(sim, 0,
+                {wr(BOARD_LINK_CTRL, BOARD_LINK_CTRL_ENABLE_MASK | BOARD_LINK_CTRL_PINS_MASK),
+                 wr(BOARD_INTERP_BLK_MODE, BOARD_INTERP_BLK_MODE_SXN_MASK), wr(BOARD_INTERP_BLK_XE, 300),
+                 wr(BOARD_INTERP_BLK_YE, 200), wr(BOARD_INTERP_PUSH, 0)});
+  ASSERT_EQ(r.status, BOARD_ERR_OK);
+  r = ask(sim, 1, {wr(BOARD_INTERP_FEED, 1u << 26), wr(BOARD_INTERP_CTRL, 2)});  // a command every 64 clocks
+  ASSERT_EQ(r.status, BOARD_ERR_OK);
+  sim.run(3000);
+  const std::uint64_t asked = sim.clocks();
+  r = ask(sim, 0, {Op{false, BOARD_LINK_ID, 0}});  // mid-line
+  const auto mid = pins_net(sim.steps());
+  EXPECT_LT(mid[0], -10);
+  EXPECT_GT(mid[0], -300);
+  for (int a = 0; a < 2; ++a)
+    EXPECT_TRUE(pins_net_seen(sim.steps(), a, asked, sim.clocks(), r.pos[a])) << "axis " << a << ": " << r.pos[a];
+  sim.run(40000);
+  r = ask(sim, 0, {Op{false, BOARD_INTERP_POS_X, 0}, Op{false, BOARD_INTERP_POS_Y, 0}});
+  ASSERT_EQ(r.data.size(), 2u);
+  EXPECT_EQ(static_cast<std::int32_t>(r.data[0]), -300);
+  EXPECT_EQ(static_cast<std::int32_t>(r.data[1]), 200);
+  EXPECT_EQ(r.pos, (std::array<std::int32_t, 3>{-300, 200, 0}));
+  EXPECT_EQ(pins_net(sim.steps()), (std::array<std::int64_t, 3>{-300, 200, 0}));
+  // Back to the chord peripheral's pins: its positions (none moved).
+  r = ask(sim, 2, {wr(BOARD_LINK_CTRL, BOARD_LINK_CTRL_ENABLE_MASK)});
+  EXPECT_EQ(r.pos, (std::array<std::int32_t, 3>{0, 0, 0}));
+}
+
 }  // namespace
 }  // namespace contour::board

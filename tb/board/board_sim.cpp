@@ -9,6 +9,27 @@ struct BoardSim::Impl : tb::Harness<Vboard_top> {
   explicit Impl(std::string fst) : tb::Harness<Vboard_top>(std::move(fst)) {}
 };
 
+std::array<std::int64_t, 3> pins_net(const std::vector<StepEvent>& steps, std::uint64_t clock) {
+  std::array<std::int64_t, 3> n{};
+  for (const StepEvent& e : steps) {
+    if (e.clock >= clock) break;
+    n[static_cast<int>(e.pulse.axis)] += e.pulse.sign;
+  }
+  return n;
+}
+
+bool pins_net_seen(const std::vector<StepEvent>& steps, int a, std::uint64_t c0, std::uint64_t c1, std::int64_t v) {
+  std::int64_t n = pins_net(steps, c0 + 1)[a];
+  if (n == v) return true;
+  for (const StepEvent& e : steps) {
+    if (e.clock <= c0 || static_cast<int>(e.pulse.axis) != a) continue;
+    if (e.clock > c1) break;
+    n += e.pulse.sign;
+    if (n == v) return true;
+  }
+  return false;
+}
+
 BoardSim::BoardSim(std::string fst_path, Faults faults)
     : impl_(std::make_unique<Impl>(std::move(fst_path))), faults_(faults) {
   impl_->top().i_rx = 1;

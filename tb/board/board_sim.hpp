@@ -10,6 +10,7 @@
 // host-to-board line for a while (characters sent then are lost).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -35,6 +36,12 @@ struct Faults {
   double cut_at_s = -1;           // host-to-board line dead from this simulated time ...
   double cut_for_s = 0;           // ... for this long
 };
+
+// The net steps per axis (X, Y, Z) the pins gave at clocks before `clock`.
+std::array<std::int64_t, 3> pins_net(const std::vector<StepEvent>& steps, std::uint64_t clock = UINT64_MAX);
+// Whether axis `a`'s net equals `v` at some clock in [c0, c1] (a reply's
+// position, read on the board at a clock the host does not know exactly).
+bool pins_net_seen(const std::vector<StepEvent>& steps, int a, std::uint64_t c0, std::uint64_t c1, std::int64_t v);
 
 class BoardSim {
  public:
