@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <fstream>
@@ -41,14 +42,17 @@ const char* kHelp =
     "  --watchdog MS     board's hold after this long without a frame (default 50)\n"
     "  --timeout S       give up when the board has not answered for S seconds (default 3)\n"
     "  --quiet           no progress line\n"
+    "  --progress        the progress line even when stderr is not a terminal (a line each)\n"
     "  --hw-arcs         paper A mode (lines and arcs as hardware blocks): NOT DONE yet\n"
-    "While it runs: a progress line on a terminal (chords sent, position read back, queue).\n"
-    "Ctrl-C: feed hold (the board slows to rest along the path), then stop (queue dropped).\n"
-    "A frame the board refuses (CRC, sequence) or loses is sent again; a tripped watchdog\n"
-    "is reported and resumed.\n"
+    "While it runs: a progress line on a terminal (chords sent, the position every reply of\n"
+    "the board carries, queue level).\n"
+    "Ctrl-C: feed hold (the board slows to rest along the path in 49 ms), then stop (queue\n"
+    "dropped); every pulse given is whole; the position at rest is printed.\n"
+    "A frame the board refuses (CRC, length, sequence) or loses is sent again; a tripped\n"
+    "watchdog is reported and resumed.\n"
     "Exit status: 0 done, the position read back equals the program's; 1 it does not;\n"
-    "2 bad input, the board does not answer or answers with an error (one line on stderr);\n"
-    "130 stopped by Ctrl-C.\n";
+    "2 bad input, the board does not answer (after --timeout) or answers with an error (one\n"
+    "line on stderr naming the port); 130 stopped by Ctrl-C (at rest, position printed).\n";
 
 std::atomic<bool> g_stop{false};
 extern "C" void on_sigint(int) { g_stop = true; }
@@ -83,15 +87,20 @@ std::vector<board::Chord3> plan_chords(const std::string& file, const planner::C
   return out;
 }
 
-void show_progress(const board::Progress& p, double spm) {
+// At most every 0.1 s, and at the end.
+void show_progress(const board::Progress& p, double spm, bool tty) {
   static std::size_t last = static_cast<std::size_t>(-1);
+  static auto shown = std::chrono::steady_clock::time_point{};
+  const auto now = std::chrono::steady_clock::now();
   if (p.sent == last || p.total == 0) return;
-  if (p.sent != p.total && p.sent % 50 != 0) return;
+  if (p.sent != p.total && now - shown < std::chrono::milliseconds(100)) return;
   last = p.sent;
+  shown = now;
   const int w = 30, done = static_cast<int>(w * p.sent / p.total);
   std::fprintf(stderr, "\r[%.*s%.*s] %3zu%% %zu/%zu chords  X %9.3f Y %9.3f Z %9.3f mm  queue %3u", done,
                "##############################", w - done, "                              ",
                100 * p.sent / p.total, p.sent, p.total, p.pos[0] / spm, p.pos[1] / spm, p.pos[2] / spm, p.level);
+  if (!tty) std::fputs("\n", stderr);
 }
 
 int report(const board::StreamResult& r, std::size_t n) {
@@ -109,7 +118,7 @@ int report(const board::StreamResult& r, std::size_t n) {
 }
 
 int run_stream(const std::vector<std::string>& argv) {
-  const Args a(argv, {"quiet", "hw-arcs"},
+  const Args a(argv, {"quiet", "progress", "hw-arcs"},
                {"port", "baud", "steps-per-mm", "accel", "cycle", "step-len", "step-space", "watchdog", "timeout"});
   if (a.help()) {
     std::fputs(kHelp, stdout);
@@ -137,15 +146,15 @@ int run_stream(const std::vector<std::string>& argv) {
   lt.dead_s = positive(a, "timeout", "3");
   const auto chords = plan_chords(a.positional()[0], pc, spm);
   try {
-    board::SerialPort sp(*port, baud);
+    board::SerialPort sp(*port, baud, lt.dead_s);
     board::LinkClient link(sp, lt);
     std::signal(SIGINT, on_sigint);
-    const bool bar = !a.flag("quiet") && isatty(STDERR_FILENO);
+    const bool tty = isatty(STDERR_FILENO), bar = a.flag("progress") || (!a.flag("quiet") && tty);
     auto progress = [&](const board::Progress& p) {
-      if (bar) show_progress(p, spm);
+      if (bar) show_progress(p, spm, tty);
     };
     const auto r = board::stream_chords(link, sp, chords, sc, progress, &g_stop);
-    if (bar) std::fputs("\n", stderr);
+    if (bar && tty) std::fputs("\n", stderr);
     return report(r, chords.size());
   } catch (const board::LinkError& e) {
     throw UsageError(*port + ": " + e.what());

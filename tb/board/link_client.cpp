@@ -1,5 +1,7 @@
 #include "link_client.hpp"
 
+#include <cstdio>
+
 namespace contour::board {
 
 namespace {
@@ -41,9 +43,11 @@ void LinkClient::go_back() {
 }
 
 void LinkClient::check_dead() {
-  if (t_.now_s() - last_valid_ > times_.dead_s)
-    throw LinkError("the board does not answer (no valid reply for " + std::to_string(times_.dead_s) + " s, " +
-                    std::to_string(stats_.frames) + " frames sent)");
+  if (t_.now_s() - last_valid_ <= times_.dead_s) return;
+  char b[96];
+  std::snprintf(b, sizeof b, "the board does not answer (no valid reply for %g s, %llu frames sent)", times_.dead_s,
+                static_cast<unsigned long long>(stats_.frames));
+  throw LinkError(b);
 }
 
 // A LEN refusal: the host's frames are always of a legal length, so one on

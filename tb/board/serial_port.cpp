@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <chrono>
 #include <cstring>
 #include <stdexcept>
@@ -33,6 +34,12 @@ speed_t speed_of(unsigned baud) {
   }
 }
 
+std::string seconds(double s) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g s", s);
+  return b;
+}
+
 std::string sys_error(const std::string& what) { return what + ": " + std::strerror(errno); }
 
 void make_raw(int fd, speed_t speed) {
@@ -54,7 +61,8 @@ void make_raw(int fd, speed_t speed) {
 
 bool baud_supported(unsigned baud) { return speed_of(baud) != B0; }
 
-SerialPort::SerialPort(const std::string& path, unsigned baud) : path_(path) {
+SerialPort::SerialPort(const std::string& path, unsigned baud, double write_timeout_s)
+    : path_(path), write_timeout_s_(write_timeout_s) {
   fd_ = ::open(path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK);
   if (fd_ < 0) throw LinkError(sys_error("cannot open '" + path + "'"));
   make_raw(fd_, speed_of(baud));
@@ -66,11 +74,15 @@ SerialPort::~SerialPort() {
 
 void SerialPort::write(const Bytes& bytes) {
   std::size_t done = 0;
+  double since = now_s();
   while (done < bytes.size()) {
     const ssize_t n = ::write(fd_, bytes.data() + done, bytes.size() - done);
     if (n > 0) {
       done += static_cast<std::size_t>(n);
+      since = now_s();
     } else if (n < 0 && (errno == EAGAIN || errno == EINTR)) {
+      if (now_s() - since > write_timeout_s_)
+        throw LinkError("the board does not answer (nothing taken from the port for " + seconds(write_timeout_s_) + ")");
       pollfd p{fd_, POLLOUT, 0};
       ::poll(&p, 1, 10);
     } else {

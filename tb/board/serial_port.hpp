@@ -9,10 +9,11 @@
 
 namespace contour::board {
 
-// The host's port. Throws LinkError if it cannot be opened or set up.
+// The host's port. Throws LinkError if it cannot be opened or set up, or
+// when a write makes no progress for `write_timeout_s` (nobody reads).
 class SerialPort : public Transport {
  public:
-  SerialPort(const std::string& path, unsigned baud);
+  SerialPort(const std::string& path, unsigned baud, double write_timeout_s = 5);
   ~SerialPort() override;
   SerialPort(const SerialPort&) = delete;
   SerialPort& operator=(const SerialPort&) = delete;
@@ -23,6 +24,7 @@ class SerialPort : public Transport {
  private:
   int fd_ = -1;
   std::string path_;
+  double write_timeout_s_;
 };
 
 // A pseudo-terminal's master, raw, non-blocking.
