@@ -58,8 +58,9 @@ module board_top #(
 
   wire [9:0] unused_txq_level;
   wire [8:0] txq_used;  // bytes in the memory (head excluded)
-  assign txq_full = txq_used[8];  // link_ctrl pushes only when not full
-  wire unused_txq_used = ^txq_used[7:0];
+  // link_ctrl pushes only when not full; its push is registered, so one
+  // more byte can come after the flag is seen: full at 255 of the 256.
+  assign txq_full = txq_used[8] | (&txq_used[7:0]);
   move_fifo #(.WIDTH(9), .AW(8)) u_txq (
       .i_clk(i_clk), .i_rst(i_rst), .i_flush(1'b0), .i_push(txq_push), .i_data(txq_in),
       .i_pop(txq_pop), .o_valid(txq_valid), .o_data(txq_out), .o_level(unused_txq_level),

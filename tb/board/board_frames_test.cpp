@@ -150,6 +150,41 @@ TEST(BoardFrames, EmptyFramesAndNoiseBeforeAFrameAreIgnored) {
   EXPECT_EQ(r2->data[0], 0x4C4E4B31u);
 }
 
+// Replies longer than their requests fill the reply queue (256 bytes):
+// frames of one read (6 characters) answered by 24 bytes. The frame engine
+// waits while the queue is full (frames that end meanwhile are dropped) and
+// never pushes past it: every reply that comes is whole and right.
+TEST(BoardFrames, AFullReplyQueueLosesNoReplyByte) {
+  BoardSim sim;
+  for (int k = 0; k < 120; ++k) sim.send(make_request(static_cast<std::uint8_t>(k), {Op{false, BOARD_LINK_ID, 0}}));
+  SlipDecoder d;
+  std::vector<Reply> got;
+  int bad = 0;
+  for (int quiet = 0, i = 0; i < 2000 && quiet < 20; ++i) {  // until 20 x 100 us with nothing more
+    sim.run(1200);
+    const Bytes in = sim.take_received();
+    quiet = (in.empty() && sim.line_idle()) ? quiet + 1 : 0;
+    for (std::uint8_t c : in)
+      if (auto f = d.feed(c)) {
+        if (auto r = parse_reply(*f)) got.push_back(*r);
+        else ++bad;
+      }
+  }
+  EXPECT_EQ(bad, 0);
+  EXPECT_GT(got.size(), 20u);
+  EXPECT_LT(got.size(), 120u);  // some frames ended while the engine waited: dropped
+  int last = -1;
+  for (const Reply& r : got) {
+    EXPECT_EQ(r.status, BOARD_ERR_OK);
+    ASSERT_EQ(r.data.size(), 1u);
+    EXPECT_EQ(r.data[0], 0x4C4E4B31u) << "reply to frame " << int{r.seq};
+    EXPECT_GT(int{r.seq}, last);  // in order, each at most once
+    last = r.seq;
+    EXPECT_EQ(r.flags, 0);
+    EXPECT_EQ(r.next_seq, 0);
+  }
+}
+
 // With LINK CTRL.PINS the X and Y pins are interp_top's, and so are the
 // replies' X and Y positions: a line of -300, +200 steps on interp_top.
 TEST(BoardFrames, RepliesCarryInterpTopsPositionsWhenItHasThePins) {

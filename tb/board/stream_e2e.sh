@@ -6,7 +6,7 @@
 #   - the board's STEP/DIR pins gave exactly the model's pulses, in order;
 #   - the position the host read back equals the net of the model's pulses
 #     and of the pins';
-#   - stream exited 0;
+#   - stream exited 0; with faults (board-sim options), it sent frames again;
 #   - with --progress (first option): the progress lines (forced, stderr a
 #     file) reach 100 %, and each position they show (the replies') is, on
 #     each axis, the pins' net after some prefix of the pulses.
@@ -45,6 +45,10 @@ read_back=$(sed -n 's/^stream: position \([-0-9]*\) \([-0-9]*\) \([-0-9]*\) step
 [ "$net" = "$read_back" ] || { echo "FAIL: position read back '$read_back', model's net '$net'"; exit 1; }
 pins_net=$(awk '{s=substr($2,1,1)=="-"?-1:1; a=substr($2,2,1); n[a]+=s} END {printf "%d %d %d", n["X"], n["Y"], n["Z"]}' "$work/pins.txt")
 [ "$pins_net" = "$read_back" ] || { echo "FAIL: position read back '$read_back', the pins' net '$pins_net'"; exit 1; }
+if [ $# -gt 0 ]; then  # faults on the wire: the host must have sent frames again
+  resends=$(sed -n 's/^stream: link [0-9]* frames, \([0-9]*\) resends.*/\1/p' "$work/stream.log")
+  [ "${resends:-0}" -gt 0 ] || { echo "FAIL: faults on the wire ($*) and no resend"; exit 1; }
+fi
 if [ $show = --progress ]; then
   lines=$(grep -c 'chords  X' "$work/progress.log" || true)
   grep -q '100% ' "$work/progress.log" || { echo "FAIL: no progress line at 100 %"; tail -3 "$work/progress.log"; exit 1; }
