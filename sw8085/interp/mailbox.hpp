@@ -55,11 +55,11 @@ namespace line {
 // Distance counters: three bytes c0 c1 c2 counting down like nested loops
 // (a stored 0 counts as 256): left = c0 + 256*(c1 - 1) + 65536*(c2 - 1),
 // 0 when all three bytes are 0.
-inline constexpr std::array<int, 3> kRx = {0x04, 0x06, 0x07};
-inline constexpr std::array<int, 3> kRy = {-1, -3, -4};
-inline constexpr int kPatY = -2;
+inline constexpr std::array<int, 3> kRx = {0x05, 0x06, 0x07};
+inline constexpr std::array<int, 3> kRy = {-2, -3, -4};
+inline constexpr int kPatY = -1;
 inline constexpr int kD = 0x01;    // 3 bytes; sign in MODE (0xFF: D >= 0, 0x00: D < 0)
-inline constexpr int kPatX = 0x05;
+inline constexpr int kPatX = 0x04;
 inline constexpr int kAxes = 0x08;  // axes with distance left
 inline constexpr int kNegB = 0x10;  // 3 bytes: -|YE| mod 2^24
 inline constexpr int kA = 0x14;     // 3 bytes: |XE|
