@@ -96,18 +96,22 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
     sm.b = b;
     sm.sx = m.xe < 0 ? -1 : +1;
     sm.sy = m.ye < 0 ? -1 : +1;
-    mb[at(base, kMode)] = a == 0 ? codes.lyo : b == 0 ? codes.lxo : line::kModeNonNeg;  // D = 0
-    put24(mb, at(base, line::kD), 0);
-    const auto rx = to_counter(a), ry = to_counter(b);
+    // P: the axis stepped when D >= 0 and the last one stepped (X iff
+    // |YE| < |XE|: the walk reaches (A - 1, B) then, else (A, B - 1)).
+    sm.swapped = a > 0 && b >= a;
+    const bool swap = sm.swapped;
+    const std::int64_t p = swap ? b : a, q = swap ? a : b;
+    mb[at(base, kMode)] = a == 0 ? codes.lyo : b == 0 ? codes.lxo : swap ? line::kModeNeg : line::kModeNonNeg;
+    put24(mb, at(base, line::kD), swap ? 0xFFFFFF : 0);  // D = 0; swapped: -D - 1 = -1
+    const auto rp = to_counter(a == 0 ? 0 : p), ry = to_counter(a == 0 ? b : 0);
     for (int i = 0; i < 3; ++i) {
-      mb[at(base, line::kRx[i])] = rx[i];
+      mb[at(base, line::kRx[i])] = rp[i];
       mb[at(base, line::kRy[i])] = ry[i];
     }
-    mb[at(base, line::kPatX)] = pattern(Axis::X, sm.sx);
-    mb[at(base, line::kPatY)] = pattern(Axis::Y, sm.sy);
-    mb[at(base, line::kAxes)] = static_cast<std::uint8_t>((a > 0) + (b > 0));
-    put24(mb, at(base, line::kNegB), static_cast<std::uint32_t>(-b & 0xFFFFFF));
-    put24(mb, at(base, line::kA), static_cast<std::uint32_t>(a));
+    mb[at(base, line::kPatX)] = swap ? pattern(Axis::Y, sm.sy) : pattern(Axis::X, sm.sx);
+    mb[at(base, line::kPatY)] = swap ? pattern(Axis::X, sm.sx) : pattern(Axis::Y, sm.sy);
+    put24(mb, at(base, line::kNegB), static_cast<std::uint32_t>(-q & 0xFFFFFF));
+    put24(mb, at(base, line::kA), static_cast<std::uint32_t>(p));
     return sm;
   }
   const auto plan = Circular<24>::validate(m.xs, m.ys, m.xe, m.ye, m.sense);
@@ -190,6 +194,54 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
   return sm;
 }
 
+namespace {
+
+// A line's state: D from MODE and its 3 bytes; the distance travelled on
+// the counted axis (P, or the only one) from its counter; Q's from D.
+template <class Bad>
+State decode_line(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Codes& codes, State s,
+                  const Bad& bad) {
+  const std::uint8_t base = sm.base;
+  const std::uint8_t mode = mb[at(base, kMode)];
+  bool neg;
+  if (mode == line::kModeNonNeg || mode == codes.lyo || mode == codes.lxo) neg = false;
+  else if (mode == line::kModeNeg) neg = true;
+  else if (mode == codes.fin_p[0]) neg = sm.swapped, s.done = true;  // D = 0: -D - 1 = -1 when swapped
+  else throw bad("no line state has this MODE");
+  const std::int64_t d24 = get24(mb, at(base, line::kD));
+  const std::int64_t dp = neg ? d24 - (std::int64_t{1} << 24) : d24;
+  s.d = sm.swapped ? -dp - 1 : dp;
+  std::array<std::uint8_t, 3> cp{}, cy{};
+  for (int i = 0; i < 3; ++i) {
+    cp[i] = mb[at(base, line::kRx[i])];
+    cy[i] = mb[at(base, line::kRy[i])];
+  }
+  const std::int64_t a = sm.a, b = sm.b;
+  std::int64_t x, y;
+  if (a == 0 || b == 0) {
+    if (s.d != 0) throw bad("D is not 0 on a one-axis line");
+    const std::int64_t left = from_counter(a == 0 ? cy : cp);
+    if (left > a + b) throw bad("distance left exceeds the move");
+    x = a == 0 ? 0 : a - left;
+    y = a == 0 ? b - left : 0;
+  } else {
+    // D = a*y - b*x: the other coordinate follows, exactly or not at all.
+    const std::int64_t left = from_counter(cp);
+    const std::int64_t p = (sm.swapped ? b : a) - left;
+    if (left > (sm.swapped ? b : a)) throw bad("distance left exceeds the move");
+    const std::int64_t num = sm.swapped ? a * p - s.d : s.d + b * p, den = sm.swapped ? b : a;
+    if (num % den != 0 || num / den < 0 || num / den > (sm.swapped ? a : b))
+      throw bad("D = " + std::to_string(s.d) + " is no point of the line at " + std::to_string(p) + " on P");
+    x = sm.swapped ? num / den : p;
+    y = sm.swapped ? p : num / den;
+  }
+  s.x = sm.sx * x;
+  s.y = sm.sy * y;
+  return s;
+}
+
+}  // namespace
+
 State decode(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Codes& codes, std::uint64_t pulses) {
   const std::uint8_t base = sm.base;
   const std::uint8_t mode = mb[at(base, kMode)];
@@ -199,25 +251,7 @@ State decode(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Co
     return std::logic_error("sw8085: slot " + std::to_string(base) + " (" + describe(sm.move) + "): " + why +
                             ", MODE = " + std::to_string(mode));
   };
-  if (!sm.arc) {
-    bool neg;
-    if (mode == line::kModeNonNeg || mode == codes.lyo || mode == codes.lxo) neg = false;
-    else if (mode == line::kModeNeg) neg = true;
-    else if (mode == codes.fin_p[0]) neg = false, s.done = true;
-    else throw bad("no line state has this MODE");
-    const std::int64_t d24 = get24(mb, at(base, line::kD));
-    s.d = neg ? d24 - (std::int64_t{1} << 24) : d24;
-    std::array<std::uint8_t, 3> cx{}, cy{};
-    for (int i = 0; i < 3; ++i) {
-      cx[i] = mb[at(base, line::kRx[i])];
-      cy[i] = mb[at(base, line::kRy[i])];
-    }
-    const std::int64_t rx = from_counter(cx), ry = from_counter(cy);
-    if (rx > sm.a || ry > sm.b) throw bad("distance left exceeds the move");
-    s.x = sm.sx * (sm.a - rx);
-    s.y = sm.sy * (sm.b - ry);
-    return s;
-  }
+  if (!sm.arc) return decode_line(sm, mb, codes, s, bad);
   const auto it = codes.arc.find(mode);
   if (it == codes.arc.end()) throw bad("no arc state has this MODE");
   s.done = it->second.done;

@@ -35,14 +35,16 @@ inline constexpr std::uint8_t kPortDone = 0x12;   // OUT: a move finished (the s
 inline constexpr std::uint8_t kIdleMode = 0x00;   // MODE of the idle pseudo-slot
 inline constexpr std::uint8_t kNext = 0x01;       // base of the slot the program starts next
 inline constexpr std::uint8_t kActive = 0x02;     // base of the slot in use (0: idle, none)
-inline constexpr std::uint8_t kOverruns = 0x03;   // 3 bytes, little endian: command pulses lost
-inline constexpr std::uint8_t kReady = 0x06;      // kReadyMagic once initialised
-inline constexpr std::uint8_t kPend = 0x07;       // base of the slot armed to start next, 0: none
+inline constexpr std::uint8_t kPend = 0x03;       // base of the slot armed to start next, 0: none
+inline constexpr std::uint8_t kOverruns = 0x04;   // 3 bytes, little endian: command pulses lost
+inline constexpr std::uint8_t kReady = 0x07;      // kReadyMagic once initialised
 inline constexpr std::uint8_t kIdleCount = 0x08;  // 2 bytes: command pulses served with no move
 inline constexpr std::uint8_t kLayout = 0x0A;     // kLayoutVersion
 inline constexpr std::uint8_t kStubs = 0x0B;      // the program's dispatch stubs (JMPs), up to the slots
 inline constexpr std::uint8_t kReadyMagic = 0x5A;
-inline constexpr std::uint8_t kLayoutVersion = 3;
+inline constexpr std::uint8_t kLayoutVersion = 4;
+// The routine that ends a move reads PEND and writes ACTIVE with one DCR L.
+static_assert(kActive + 1 == kPend, "interp.a80 FINISH: MB_ACTIVE must be MB_PEND - 1");
 
 // Slots: a slot spans base-4 .. base+0x3B.
 inline constexpr std::array<std::uint8_t, 2> kSlots = {0x80, 0xC0};
@@ -50,19 +52,23 @@ inline constexpr int kMode = 0x00;
 inline constexpr int kStatus = 0x3B;  // host: kQueued; program: kStarted
 inline constexpr std::uint8_t kQueued = 0x01, kStarted = 0x02;
 
-// Line slot: offsets from the base.
+// Line slot: offsets from the base. A line with both axes moving is stored
+// with its axes ordered: P is the axis the program steps when D >= 0 and
+// the one whose last step ends the move (X when |YE| < |XE|), Q the other.
+// If P is Y the axes are swapped and the program's D is -D - 1 (so that
+// D >= 0, the tie included, still steps X). Only P has a distance counter;
+// Q's position follows from D: D = |XE|*|y| - |YE|*|x|.
 namespace line {
 // Distance counters: three bytes c0 c1 c2 counting down like nested loops
 // (a stored 0 counts as 256): left = c0 + 256*(c1 - 1) + 65536*(c2 - 1),
 // 0 when all three bytes are 0.
-inline constexpr std::array<int, 3> kRx = {0x04, 0x06, 0x07};
-inline constexpr std::array<int, 3> kRy = {-1, -3, -4};
-inline constexpr int kPatY = -2;
+inline constexpr std::array<int, 3> kRx = {0x05, 0x06, 0x07};  // P's (or X's, YE = 0)
+inline constexpr std::array<int, 3> kRy = {-2, -3, -4};        // Y's, for a line with XE = 0 only
+inline constexpr int kPatY = -1;   // Q's pattern (Y's when XE = 0)
 inline constexpr int kD = 0x01;    // 3 bytes; sign in MODE (0xFF: D >= 0, 0x00: D < 0)
-inline constexpr int kPatX = 0x05;
-inline constexpr int kAxes = 0x08;  // axes with distance left
-inline constexpr int kNegB = 0x10;  // 3 bytes: -|YE| mod 2^24
-inline constexpr int kA = 0x14;     // 3 bytes: |XE|
+inline constexpr int kPatX = 0x04;  // P's pattern (X's when YE = 0)
+inline constexpr int kNegB = 0x10;  // 3 bytes: -|Q| mod 2^24
+inline constexpr int kA = 0x14;     // 3 bytes: |P|
 inline constexpr std::uint8_t kModeNonNeg = 0xFF, kModeNeg = 0x00;
 }  // namespace line
 
@@ -125,6 +131,7 @@ struct SlotMove {
   bool arc = false;
   std::int8_t sx = 1, sy = 1;  // line: signs
   std::int64_t a = 0, b = 0;   // line: |XE|, |YE|
+  bool swapped = false;        // line: P is Y (the program's D is -D - 1)
 };
 
 // Writes `m` (already validated, not done at once) into the slot at `base`

@@ -36,7 +36,7 @@ TEST(Mailbox, OffsetsAreTheProgramsEqus) {
       {"PSTEP", kPortStep}, {"PEDGES", kPortEdges}, {"PDONE", kPortDone},
       {"L_D0", line::kD}, {"L_RX0", line::kRx[0]}, {"L_RX1", line::kRx[1]}, {"L_RX2", line::kRx[2]},
       {"L_RY0", line::kRy[0]}, {"L_RY1", line::kRy[1]}, {"L_RY2", line::kRy[2]},
-      {"L_PATX", line::kPatX}, {"L_PATY", line::kPatY}, {"L_AXES", line::kAxes}, {"L_NB", line::kNegB},
+      {"L_PATX", line::kPatX}, {"L_PATY", line::kPatY}, {"L_NB", line::kNegB},
       {"L_A", line::kA},
       {"A_D0", arc::kD}, {"A_CX", arc::kCx}, {"A_CY", arc::kCy},
       {"A_RX0", arc::kRx[0]}, {"A_RX1", arc::kRx[1]}, {"A_RX2", arc::kRx[2]},
@@ -97,6 +97,23 @@ TEST(Mailbox, DistanceCountersRoundTrip) {
     EXPECT_EQ(s.y, 0) << v;
     EXPECT_EQ(s.d, 0) << v;
     EXPECT_FALSE(s.done) << v;
+  }
+}
+
+// A line's Q coordinate is read from D (D = |XE|*|y| - |YE|*|x|): a D that
+// is no point of the line, at P's position, is an error, not a position.
+TEST(Mailbox, LineDThatIsNoPointIsAnError) {
+  const Codes c = Codes::from_symbols(Program::builtin().symbols);
+  for (const Move& m : {Move::line(9, -7), Move::line(7, -9)}) {  // P = X; P = Y (axes swapped)
+    std::array<std::uint8_t, 256> mb{};
+    const SlotMove sm = encode(m, kSlots[0], c, mb);
+    EXPECT_EQ(sm.swapped, m.ye == -9);
+    const State s = decode(sm, mb, c, 0);
+    EXPECT_EQ(s.x, 0);
+    EXPECT_EQ(s.y, 0);
+    EXPECT_EQ(s.d, 0);
+    mb[kSlots[0] + line::kD] ^= 1;  // D off by one
+    EXPECT_THROW(decode(sm, mb, c, 0), std::logic_error) << describe(m);
   }
 }
 
