@@ -87,13 +87,15 @@ module link_ctrl #(
   assign o_busy = (state_q != S_IDLE);
   assign o_rd_addr = (bank_q ? MAX[7:0] : 8'd0) + idx_q;  // bank * MAX + index
 
-  // The trailer's fields by byte index k_q (board.def's REPLY lines; the
-  // positions are 4-byte fields, the others 1 byte).
+  // The trailer's fields by byte index k_q (board.def's REPLY lines; a
+  // position's bytes are the top bytes of its 32-bit register, the other
+  // fields are 1 byte).
   localparam [4:0] T_LAST = REPLY_TRAILER[4:0] - 5'd1;
   localparam [4:0] T_PX = REPLY_POS_X[4:0], T_PY = REPLY_POS_Y[4:0], T_PZ = REPLY_POS_Z[4:0];
+  localparam [4:0] N_PX = REPLY_POS_X_BYTES[4:0], N_PY = REPLY_POS_Y_BYTES[4:0], N_PZ = REPLY_POS_Z_BYTES[4:0];
   wire pos_start = k_q == T_PX || k_q == T_PY || k_q == T_PZ;
-  wire in_pos = (k_q >= T_PX && k_q < T_PX + 5'd4) || (k_q >= T_PY && k_q < T_PY + 5'd4) ||
-                (k_q >= T_PZ && k_q < T_PZ + 5'd4);
+  wire in_pos = (k_q >= T_PX && k_q < T_PX + N_PX) || (k_q >= T_PY && k_q < T_PY + N_PY) ||
+                (k_q >= T_PZ && k_q < T_PZ + N_PZ);
   wire [6:0] pos_adr = k_q == T_PX ? (i_pins ? W_INTERP_POS_X : W_AXIS3_POS_X) :
                        k_q == T_PY ? (i_pins ? W_INTERP_POS_Y : W_AXIS3_POS_Y) : W_AXIS3_POS_Z;
 

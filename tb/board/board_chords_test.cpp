@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <random>
 
@@ -167,6 +168,42 @@ TEST(BoardChords, WatchdogStopsAlongThePathAndResumes) {
   EXPECT_GT(static_cast<double>(steps_in(o.steps, stop - 62e-3, stop - 60e-3)), 0.9 * full);
   // And the restart ramps up the same way.
   EXPECT_LT(steps_in(o.steps, go, go + 2e-3), 0.15 * full);
+}
+
+// A stop request (Ctrl-C in `contour stream`) 0.2 s into a steady line:
+// feed hold, rest along the ramp, then the queue dropped. The pins give a
+// prefix of the model's pulses, every one whole; the position read back is
+// the pins' net.
+TEST(BoardChords, AStopRequestHoldsThenStopsAtRestWithAPrefixOfThePulses) {
+  const std::vector<Chord3> chords(500, Chord3{30, -20, 10});
+  BoardSim sim;
+  SimTransport t(sim);
+  LinkClient link(t);
+  std::atomic<bool> stop{false};
+  const StreamResult r = stream_chords(link, t, chords, {}, [&](const Progress&) {
+    if (sim.seconds() > 0.2) stop = true;
+  }, &stop);
+  EXPECT_TRUE(r.stopped);
+  const auto m = model_pulses(chords);
+  const auto& s = sim.steps();
+  ASSERT_GT(s.size(), 1000u);
+  ASSERT_LT(s.size(), m.size());
+  for (std::size_t i = 0; i < s.size(); ++i)
+    ASSERT_EQ(s[i].pulse, m[i].pulse) << "pulse " << i;
+  EXPECT_EQ(pins_net(s), r.end);
+  EXPECT_EQ(sim.simultaneous_steps(), 0u);
+  EXPECT_FALSE(sim.enable_pin());
+  // The ramp: the last pulses crawl, 60 ms before it was full speed.
+  const double end = static_cast<double>(s.back().clock) / kClockHz, full = 60.0 * 2;
+  EXPECT_LT(steps_in(s, end - 2e-3, end + 1e-9), 0.15 * full);
+  const double half = static_cast<double>(steps_in(s, end - 26e-3, end - 24e-3));
+  EXPECT_GT(half, 0.35 * full);
+  EXPECT_LT(half, 0.65 * full);
+  EXPECT_GT(static_cast<double>(steps_in(s, end - 62e-3, end - 60e-3)), 0.9 * full);
+  // At rest: nothing more comes.
+  const std::size_t n = s.size();
+  sim.run(120000);
+  EXPECT_EQ(sim.steps().size(), n);
 }
 
 }  // namespace

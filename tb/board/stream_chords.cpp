@@ -114,8 +114,11 @@ void stop_motion(Run& r, Transport& t) {
   for (;;) {
     const Reply s = r.link.transact({rd(BOARD_LINK_STATUS)});
     if ((s.data[0] >> BOARD_LINK_STATUS_STOPPED_LSB) & 1u) break;
-    if (t.now_s() - t0 > r.cfg.rest_s)
-      throw LinkError("the board did not come to rest within " + std::to_string(r.cfg.rest_s) + " s of a feed hold");
+    if (t.now_s() - t0 > r.cfg.rest_s) {
+      char b[80];
+      std::snprintf(b, sizeof b, "the board did not come to rest within %g s of a feed hold", r.cfg.rest_s);
+      throw LinkError(b);
+    }
   }
   r.link.transact({wr(BOARD_AXIS3_CTRL, 1u << BOARD_AXIS3_CTRL_ABORT_LSB), wr(BOARD_LINK_CTRL, 0)});
   r.res.stopped = true;
