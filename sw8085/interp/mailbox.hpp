@@ -76,15 +76,16 @@ inline constexpr std::uint8_t kModeNonNeg = 0xFF, kModeNeg = 0x00;
 namespace arc {
 inline constexpr int kPout = -2, kPin = -1;
 inline constexpr int kD = 0x01;    // D', 3 bytes; its sign and p (D = 2*D' + p) from MODE
-inline constexpr int kCx = 0x05, kCy = 0x0B;  // 3 bytes each
+inline constexpr int kCx = 0x07, kCy = 0x0D;  // 3 bytes each
 // The distance to the end on each axis in the end quadrant (the host's
 // value from the entry point, or from the start if the arc starts there):
 // distance counters as the line's, byte 0 below the coordinate.
-inline constexpr std::array<int, 3> kRx = {0x04, 0x08, 0x09};
-inline constexpr std::array<int, 3> kRy = {0x0A, 0x0E, 0x0F};
+// Bytes 0, 1, 2 downwards just below the coordinate.
+inline constexpr std::array<int, 3> kRx = {0x06, 0x05, 0x04};
+inline constexpr std::array<int, 3> kRy = {0x0C, 0x0B, 0x0A};
 // k, stored as the mailbox address of its crossing-table entry:
 // base + kTable + 4k (mod 256).
-inline constexpr int kK = 0x12;
+inline constexpr int kK = -3;
 // The crossing table: for k' = 0..4, the entry of the quadrant entered when
 // k becomes k' (and for the start's k, the start quadrant): CODE (the new
 // family's code for p = 0, D >= 0; bit 7 set if the move ends on entering

@@ -77,6 +77,9 @@ TEST(Mailbox, CodesAreDistinctAndDispatchable) {
     EXPECT_LT(code, 0x80);  // 01h..7Fh: the dispatch's JP
   }
   EXPECT_EQ(all.size(), 3u + 2 * 18);
+  // A family's code for D < 0 is its code for D >= 0 plus 3, the done codes
+  // too (the program writes FIN codes as immediates with that rule).
+  for (int p = 0; p < 2; ++p) EXPECT_EQ(c.fin_n[p], c.fin_p[p] + 3);
   // The stubs the program copies to kStubs end below the first slot.
   EXPECT_LE(sym("S_END") - sym("STUBS") + sym("MB_STUBS"), kSlots[0] - 4);
   EXPECT_GT(c.idle, kLayout);
