@@ -81,6 +81,7 @@ class AxisMonitor {
 class TopHarness : public tb::Harness<Vinterp_top> {
  public:
   TopHarness() : mx_(Axis::X, &timing), my_(Axis::Y, &timing) {
+    top_->i_cmd_ce = 1;  // no time scale here (the board's, tb/board)
     hold_reset(2);
     tick();
   }
