@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -242,6 +243,39 @@ TEST(BoardBlocks, WatchdogStopsAlongThePathAndResumes) {
   EXPECT_LT(half, 0.65 * full);
   EXPECT_LT(path_in(o.steps, stop - 4e-3, stop + 1e-9), 0.15 * full);
   EXPECT_LT(path_in(o.steps, go, go + 4e-3), 0.15 * full);
+}
+
+// The host's hold (Ctrl-C in `contour stream`): HOLD, rest along the
+// path, then the queue dropped. The pins give a prefix of the model's
+// pulses (none lost, none half given), the position read back is their
+// net, nothing moves after.
+TEST(BoardBlocks, HostHoldStopsAlongThePathThenAborts) {
+  const planner::Plan plan = plan_text("G21 G90 G17\nG03 X0. Y0. I6. J0. F3000\n");
+  const BlockProgram p = to_blocks(plan, kSpm);
+  BoardSim sim;
+  SimTransport t(sim);
+  LinkClient link(t);
+  std::atomic<bool> stop{false};
+  const StreamResult r = stream_blocks(
+      link, t, p, StreamConfig{}, [&](const Progress&) { stop = stop || sim.seconds() > 0.3; }, &stop);
+  EXPECT_TRUE(r.stopped);
+  const std::vector<StepEvent> s = sim.steps();
+  const std::vector<Pulse> m = model_pulses(p.blocks.at(0));
+  ASSERT_GT(s.size(), 0u);
+  ASSERT_LT(s.size(), m.size());
+  std::int64_t x = 0, y = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    ASSERT_EQ(s[i].pulse, m[i]) << "pulse " << i;
+    (m[i].axis == Axis::X ? x : y) += m[i].sign;
+  }
+  EXPECT_EQ(r.end[0] - r.start[0], x);
+  EXPECT_EQ(r.end[1] - r.start[1], y);
+  const double rest = static_cast<double>(s.back().clock) / kClockHz;
+  const double full = plan.segs.back().v_cruise * 4e-3;
+  EXPECT_GT(path_in(s, rest - 64e-3, rest - 60e-3), 0.9 * full);
+  EXPECT_LT(path_in(s, rest - 4e-3, rest + 1e-9), 0.15 * full);
+  sim.run(120000);  // 10 ms more
+  EXPECT_EQ(sim.steps().size(), s.size());
 }
 
 }  // namespace
