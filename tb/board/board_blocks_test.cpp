@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 #include "board_sim.hpp"
@@ -111,6 +112,44 @@ TEST(BoardBlocks, ConversionCoversEveryQuadrantBothSensesAndFullCircles) {
   EXPECT_GE(arcs[1], 3);
   EXPECT_EQ(full, 2);
   EXPECT_EQ(quadrants, 0xF);
+}
+
+// Random G17 arcs (radius 0.01 to 40 mm, any start and end angle, both
+// senses, 4 decimals as a CAM writes them): how often the conversion ends
+// an arc exactly on the G-code's end point rounded to the grid (the rule's
+// first choice) rather than beside it (docs/board.md). Every block is one
+// paper A accepts at W = 16 and starts where the one before ended.
+TEST(BoardBlocks, ArcsEndOnTheRoundedEndPoint) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> ang(0, 6.283185307179586), lr(std::log(0.01), std::log(40.0));
+  std::size_t exact = 0, beside = 0, as_line = 0, n = 2000;
+  double worst = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = std::exp(lr(rng)), a0 = ang(rng), a1 = ang(rng);
+    char text[256];
+    const double xs = r * std::cos(a0), ys = r * std::sin(a0);
+    std::snprintf(text, sizeof text, "G21 G90 G17\nG01 X%.4f Y%.4f F3000\nG0%d X%.4f Y%.4f I%.4f J%.4f\n", xs, ys,
+                  i % 2 ? 2 : 3, r * std::cos(a1), r * std::sin(a1), -xs, -ys);
+    const auto g = gcode::parse(text);
+    const BlockProgram p = to_blocks(planner::plan(g, planner::Config{}), kSpm);
+    ASSERT_FALSE(p.blocks.empty()) << text;
+    const HwBlock& b = p.blocks.back();
+    if (p.blocks.size() == 2) EXPECT_EQ(b.x0, p.blocks[0].end_x()) << text;
+    if (!b.arc) {
+      ++as_line;
+      continue;
+    }
+    EXPECT_NO_THROW(Circular<16>::validate(b.xs, b.ys, b.xe, b.ye, b.cw ? Sense::CW : Sense::CCW)) << text;
+    const double dx = static_cast<double>(b.end_x() - std::llround(g.back().end.x * kSpm));
+    const double dy = static_cast<double>(b.end_y() - std::llround(g.back().end.y * kSpm));
+    const double d = std::hypot(dx, dy);
+    worst = std::max(worst, d);
+    (d == 0 ? exact : beside) += 1;
+  }
+  std::printf("arcs: %zu of %zu end on the rounded end point, %zu beside it (at most %.2f steps), %zu sent as lines\n",
+              exact, n, beside, worst, as_line);
+  EXPECT_GT(exact, n * 95 / 100);
+  EXPECT_LE(worst, 3.0);
 }
 
 // The oracle of the ends is the G-code reader's end points, rounded to the
