@@ -242,6 +242,26 @@ TEST(BoardBlocks, WhatTheBoardCannotDoIsRefusedNamingTheLine) {
   refused("G21 G90 G17\nG01 X1. F1000\nG03 X1. Y0. I-70. J0.\n", "line 3: an arc's start X about its centre");
 }
 
+// Blocks shorter than a cycle (0.05 mm at 80 mm/s: 0.625 ms, 1600 a
+// second): the queue must stay fed, the pulses come evenly through the
+// cruise (an empty queue would stop the motion at once and show as a gap).
+TEST(BoardBlocks, ShortBlocksKeepTheQueueFed) {
+  std::string text = "G21 G90 G17 G64\nF4800\n";
+  for (int i = 1; i <= 400; ++i) text += "G01 X" + std::to_string(0.05 * i) + "\n";
+  const planner::Plan plan = plan_text(text);
+  const BlockProgram p = to_blocks(plan, kSpm);
+  ASSERT_EQ(p.blocks.size(), 400u);
+  const Outcome o = run_blocks(p);
+  expect_model_pulses(o, p);
+  // The cruise: the middle half of the pulses, 12.5 us apart at 80 mm/s.
+  std::uint64_t gap = 0;
+  for (std::size_t i = o.steps.size() / 4 + 1; i < 3 * o.steps.size() / 4; ++i)
+    gap = std::max(gap, o.steps[i].clock - o.steps[i - 1].clock);
+  const double us = static_cast<double>(gap) / kClockHz * 1e6;
+  std::printf("short blocks: longest gap between pulses in cruise %.2f us (planned 12.5 us)\n", us);
+  EXPECT_LT(us, 20.0);
+}
+
 // The distance (mm) the pins moved in [t0, t1) seconds of the run.
 double path_in(const std::vector<StepEvent>& s, double t0, double t1) {
   double x = 0, y = 0;

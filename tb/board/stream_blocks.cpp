@@ -363,6 +363,20 @@ void post_cycle(BlockRun& r, Transport& t) {
   r.link.post(ops, k);
 }
 
+// Between the cycles, while the queue is below half full: a frame of
+// blocks only (two fit), so that blocks shorter than a cycle keep it fed.
+void post_blocks(BlockRun& r) {
+  const std::size_t used = r.link.last().level2 + r.link.chords_in_flight();
+  if (r.next >= r.prog.blocks.size() || 2 * used >= r.depth) return;
+  std::vector<Op> ops;
+  std::size_t k = 0;
+  for (; k < 2 && r.next < r.prog.blocks.size() && used + k + 3 < r.depth; ++k) {
+    const auto b = block_ops(r.prog.blocks[r.next++]);
+    ops.insert(ops.end(), b.begin(), b.end());
+  }
+  r.link.post(ops, k);
+}
+
 void post_resume(BlockRun& r) {
   if (!r.wdog_seen || r.resume_posted) return;
   r.link.post({wr(BOARD_LINK_CTRL, kEnable | kPins | kResume)}, 0);
@@ -435,6 +449,7 @@ StreamResult stream_blocks(LinkClient& link, Transport& t, const BlockProgram& p
   while (r.moves_done < n) {
     if (stop && stop->load()) break;
     if (t.now_s() - r.last_cycle >= cfg.cycle_s && link.in_flight() < kMaxInFlight) post_cycle(r, t);
+    else if (link.in_flight() + 1 < kMaxInFlight) post_blocks(r);
     post_resume(r);
     link.pump(cfg.cycle_s / 4);
     r.prog_out.sent = r.next;
