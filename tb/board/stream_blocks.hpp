@@ -7,13 +7,13 @@
 //
 // The conversion (to_blocks): every point is rounded to the nearest step
 // on the program's grid; a line runs from where the hardware really is
-// (the end of the block before) to the rounded end point; an arc keeps
-// its start (where the hardware is) about the rounded centre, and ends at
-// the rounded end point if paper A accepts it there on the same side of
-// the start as the program's sweep, otherwise at the rounded point of its
-// own circle in the direction of the programmed end; an arc too short for
-// either becomes a line. So each block starts exactly where the last one
-// ended: nothing accumulates.
+// (the end of the block before) to the rounded end point; an arc runs from
+// there to the rounded end point about the lattice point nearest the
+// programmed centre (of the 5 x 5 around it) for which paper A accepts the
+// arc with the program's sweep; if none does, to the rounded point of its
+// own circle toward the programmed end; an arc too short for either
+// becomes a line. So each block starts exactly where the last one ended:
+// nothing accumulates.
 //
 // The feed (FeedSchedule): the plan's progress in hardware pulses,
 // N(t) = the pulses of the blocks before + the block's pulses times the
