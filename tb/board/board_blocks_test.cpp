@@ -242,24 +242,42 @@ TEST(BoardBlocks, WhatTheBoardCannotDoIsRefusedNamingTheLine) {
   refused("G21 G90 G17\nG01 X1. F1000\nG03 X1. Y0. I-70. J0.\n", "line 3: an arc's start X about its centre");
 }
 
-// Blocks shorter than a cycle (0.05 mm at 80 mm/s: 0.625 ms, 1600 a
-// second): the queue must stay fed, the pulses come evenly through the
-// cruise (an empty queue would stop the motion at once and show as a gap).
-TEST(BoardBlocks, ShortBlocksKeepTheQueueFed) {
+// 400 collinear lines of `mm` at 80 mm/s through the link, `braking` the
+// feed's cap (off: to measure the link alone); the pins must be the
+// model's. Returns the longest gap between pulses in the middle half (us)
+// and the mean speed there (mm/s).
+std::pair<double, double> run_short_lines(double mm, bool braking) {
   std::string text = "G21 G90 G17 G64\nF4800\n";
-  for (int i = 1; i <= 400; ++i) text += "G01 X" + std::to_string(0.05 * i) + "\n";
-  const planner::Plan plan = plan_text(text);
-  const BlockProgram p = to_blocks(plan, kSpm);
-  ASSERT_EQ(p.blocks.size(), 400u);
+  for (int i = 1; i <= 400; ++i) text += "G01 X" + std::to_string(mm * i) + "\n";
+  BlockProgram p = to_blocks(plan_text(text), kSpm);
+  EXPECT_EQ(p.blocks.size(), 400u);
+  if (!braking) p.decel = 0;
   const Outcome o = run_blocks(p);
   expect_model_pulses(o, p);
-  // The cruise: the middle half of the pulses, 12.5 us apart at 80 mm/s.
+  const std::size_t a = o.steps.size() / 4, b = 3 * o.steps.size() / 4;
   std::uint64_t gap = 0;
-  for (std::size_t i = o.steps.size() / 4 + 1; i < 3 * o.steps.size() / 4; ++i)
-    gap = std::max(gap, o.steps[i].clock - o.steps[i - 1].clock);
-  const double us = static_cast<double>(gap) / kClockHz * 1e6;
-  std::printf("short blocks: longest gap between pulses in cruise %.2f us (planned 12.5 us)\n", us);
-  EXPECT_LT(us, 20.0);
+  for (std::size_t i = a + 1; i < b; ++i) gap = std::max(gap, o.steps[i].clock - o.steps[i - 1].clock);
+  const double span = static_cast<double>(o.steps[b].clock - o.steps[a].clock) / kClockHz;
+  const double us = static_cast<double>(gap) / kClockHz * 1e6, v = static_cast<double>(b - a) / kSpm / span;
+  std::printf("lines of %.3f mm, cap %s: longest gap between pulses %.2f us (12.5 planned), speed %.1f mm/s (80)\n",
+              mm, braking ? "on" : "off", us, v);
+  return {us, v};
+}
+
+// The link alone (the cap off): blocks shorter than a cycle (0.05 mm at
+// 80 mm/s: 0.625 ms, 1600 a second) keep the queue fed, the pulses even
+// through the cruise (one block a cycle starved: a gap of 562.5 us).
+TEST(BoardBlocks, ShortBlocksKeepTheQueueFed) { EXPECT_LT(run_short_lines(0.05, false).first, 20.0); }
+
+// Blocks too short for the link (0.015 mm: 5333 a second): without the
+// cap the queue runs dry and the motion stops dead (gaps of hundreds of
+// us); with it the feed stays where the board can brake within the blocks
+// it has: slower, never a stop.
+TEST(BoardBlocks, BlocksTooShortForTheLinkSlowTheMotionInsteadOfStoppingIt) {
+  EXPECT_GT(run_short_lines(0.015, false).first, 300.0);
+  const auto [gap, v] = run_short_lines(0.015, true);
+  EXPECT_LT(gap, 150.0);
+  EXPECT_LT(v, 40.0);
 }
 
 // The distance (mm) the pins moved in [t0, t1) seconds of the run.

@@ -249,6 +249,13 @@ BlockProgram to_blocks(const planner::Plan& plan, double spm, unsigned width) {
   p.x1 = hx;
   p.y1 = hy;
   p.feed = schedule(plan, p.blocks);
+  double n = 0, a = 0;
+  for (const HwBlock& b : p.blocks) {
+    p.ends.push_back(n += static_cast<double>(b.pulses));
+    const double at = plan.segs[b.seg].a_t;
+    if (at > 0 && (a == 0 || at < a)) a = at;
+  }
+  p.decel = a * spm;
   return p;
 }
 
@@ -320,13 +327,24 @@ struct BlockRun {
   std::size_t depth = 0, next = 0;
   std::uint32_t moves0 = 0, moves_done = 0;
   std::int64_t hx0 = 0, hy0 = 0;  // the board's position at the program's start
-  double tau = 0, last_cycle = 0;
+  double tau = 0, last_cycle = 0, last_rate = 0;
   double read_at = 0;                 // host time of the frame whose reads gave the progress
   std::array<double, 256> posted{};   // host time each frame (by sequence number) was posted
   bool wdog_seen = false, resume_posted = false;
   Progress prog_out;
   StreamResult res;
 };
+
+// The fastest rate from which the board brakes to rest (at the plan's
+// least deceleration) within the blocks it has surely queued, less what it
+// may have run since its last report; no cap once every block is there.
+double braking_cap(const BlockRun& r, double n) {
+  const std::size_t on_board = r.next - r.link.chords_in_flight();
+  if (on_board >= r.prog.blocks.size() || r.prog.decel <= 0) return 1e30;
+  const double end = on_board == 0 ? 0 : r.prog.ends[on_board - 1];
+  const double left = end - n - r.last_rate * 2 * r.prog.feed.cycle();
+  return left <= 0 ? 0 : std::sqrt(2 * r.prog.decel * left);
+}
 
 // The feed of this cycle (docs/board.md, "The feed"): the plan time tau
 // advances with the host's clock, but not past the time the plan gives
@@ -341,8 +359,9 @@ double cycle_rate(BlockRun& r, double now) {
   const double age = std::min(now - r.read_at, 2 * f.cycle());
   r.tau = std::min(r.tau + (now - r.last_cycle), due + age);
   r.last_cycle = now;
-  const double rate = f.rate_at(r.tau);
-  if (r.tau >= due && n < f.total()) return std::max(rate, 1 / f.cycle());
+  double rate = std::min(f.rate_at(r.tau), braking_cap(r, n));
+  if (r.tau >= due && n < f.total()) rate = std::max(rate, 1 / f.cycle());
+  r.last_rate = rate;
   return rate;
 }
 

@@ -21,7 +21,10 @@
 // along the path) planned done at t. Each cycle the host writes the rate
 // (N(tau + T) - N(tau)) / T, tau the plan time, which advances with the
 // host's clock but never past the time the plan gives the pulse after
-// the one the board has reached.
+// the one the board has reached, and never faster than the board can
+// brake to rest within the blocks it has queued (when the link cannot
+// keep up with short blocks, the motion slows instead of stopping dead on
+// an empty queue).
 #pragma once
 
 #include <array>
@@ -77,6 +80,8 @@ struct BlockProgram {
   std::int64_t x0 = 0, y0 = 0;  // the program's start and end, steps
   std::int64_t x1 = 0, y1 = 0;  // (the end: where the last block ends)
   unsigned width = 16;
+  std::vector<double> ends;  // the plan's pulse count at the end of each block
+  double decel = 0;          // pulses/s^2 the plan may always brake at (its least a_t, in steps)
 };
 
 // The blocks of a plan on a grid of `steps_per_mm`, for interp_top at
