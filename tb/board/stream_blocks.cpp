@@ -478,8 +478,11 @@ StreamResult stream_blocks(LinkClient& link, Transport& t, const BlockProgram& p
   link.drain();
   link.on_reply = nullptr;
   link.on_data = nullptr;
-  const Reply e = link.transact({wr(BOARD_INTERP_FEED, 0), rd(BOARD_INTERP_POS_X), rd(BOARD_INTERP_POS_Y),
-                                 rd(BOARD_AXIS3_POS_Z), rd(BOARD_INTERP_MOVES)});
+  // The write alone: a frame with writes that is sent again is answered DUP,
+  // without its reads.
+  link.transact({wr(BOARD_INTERP_FEED, 0)});
+  const Reply e =
+      link.transact({rd(BOARD_INTERP_POS_X), rd(BOARD_INTERP_POS_Y), rd(BOARD_AXIS3_POS_Z), rd(BOARD_INTERP_MOVES)});
   r.res.end = {to_signed(e.data[0]), to_signed(e.data[1]), to_signed(e.data[2])};
   r.res.chords = e.data[3] - r.moves0;
   r.res.link = link.stats();
