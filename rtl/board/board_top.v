@@ -101,7 +101,7 @@ module board_top #(
   wire unused_pulse, unused_pulse_y, unused_pulse_neg, unused_busy;
   interp_top #(.W(W), .QAW(4)) u_interp (
       .i_clk(i_clk), .i_rst(i_rst), .i_wb_cyc(m_cyc & sel_i), .i_wb_stb(m_cyc & sel_i), .i_wb_we(m_we),
-      .i_wb_adr(s_adr), .i_wb_dat(m_dat_w), .o_wb_dat(dat_i), .o_wb_ack(ack_i), .i_cmd_pin(1'b0),
+      .i_wb_adr(s_adr), .i_wb_dat(m_dat_w), .o_wb_dat(dat_i), .o_wb_ack(ack_i), .i_cmd_pin(1'b0), .i_cmd_ce(ce),
       .o_step_x(i_step_x), .o_dir_x(i_dir_x), .o_step_y(i_step_y), .o_dir_y(i_dir_y),
       .o_pulse(unused_pulse), .o_pulse_y(unused_pulse_y), .o_pulse_neg(unused_pulse_neg), .o_busy(unused_busy)
   );

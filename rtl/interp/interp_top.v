@@ -2,6 +2,7 @@
 //
 //   wb_regs -> interp_core (prep, queue, datapath) -> step_out -> pins
 //              cmd_gen (pin / feed / every clock) --^   pos_counter x2
+//              (feed and every clock on i_cmd_ce: the board's time scale)
 //
 // Synchronous, active-high reset for every flop. The debug outputs carry
 // the core's pulses (one per interpolation step) for test benches.
@@ -23,6 +24,9 @@ module interp_top #(
     output wire        o_wb_ack,
     // Command pin (paper A's interrupt line), asynchronous
     input  wire        i_cmd_pin,
+    // Clock enable of the feed generator and the every-clock source (a
+    // time scale: the board's feed hold); 1 where there is none
+    input  wire        i_cmd_ce,
     // Step/dir outputs
     output wire        o_step_x,
     output wire        o_dir_x,
@@ -60,7 +64,7 @@ module interp_top #(
   );
 
   cmd_gen #(.N(32)) u_cmd (
-      .i_clk(i_clk), .i_rst(i_rst), .i_src(src), .i_pin(i_cmd_pin), .i_inc(feed), .o_cmd(cmd_raw)
+      .i_clk(i_clk), .i_rst(i_rst), .i_ce(i_cmd_ce), .i_src(src), .i_pin(i_cmd_pin), .i_inc(feed), .o_cmd(cmd_raw)
   );
 
   // The core's state outputs are for test benches; the peripheral reports

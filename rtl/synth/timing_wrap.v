@@ -124,7 +124,7 @@ module timing_wrap (
       .i_clk(i_clk), .i_rst(rst),
       .i_wb_cyc(in_q[0]), .i_wb_stb(in_q[1]), .i_wb_we(in_q[2]), .i_wb_adr(in_q[10:3]),
       .i_wb_dat(in_q[42:11]), .o_wb_dat(outs[31:0]), .o_wb_ack(outs[32]),
-      .i_cmd_pin(in_q[43]),
+      .i_cmd_pin(in_q[43]), .i_cmd_ce(1'b1),
       .o_step_x(outs[33]), .o_dir_x(outs[34]), .o_step_y(outs[35]), .o_dir_y(outs[36]),
       .o_pulse(outs[37]), .o_pulse_y(outs[38]), .o_pulse_neg(outs[39]), .o_busy(outs[40])
   );

@@ -17,6 +17,7 @@
 #include "planner/two_stage.hpp"
 #include "registry.hpp"
 #include "serial_port.hpp"
+#include "stream_blocks.hpp"
 #include "stream_chords.hpp"
 
 namespace contour::cli {
@@ -43,7 +44,12 @@ const char* kHelp =
     "  --timeout S       give up when the board has not answered for S seconds (default 3)\n"
     "  --quiet           no progress line\n"
     "  --progress        the progress line even when stderr is not a terminal (a line each)\n"
-    "  --hw-arcs         paper A mode (lines and arcs as hardware blocks): NOT DONE yet\n"
+    "  --hw-arcs         paper A mode: the lines and arcs of the XY plane (G17) go to interp_top\n"
+    "                    as hardware blocks (exact paper A arcs, at most 65535 steps from a\n"
+    "                    start or centre), its feed written every cycle from the planner's\n"
+    "                    profile; a Z move or an arc out of the XY plane is refused (exit 2)\n"
+    "  --blocks FILE     with --hw-arcs: write the blocks sent, one a line, as `contour line`\n"
+    "                    or `contour arc` takes them, with the G-code line\n"
     "While it runs: a progress line on a terminal (chords sent, the position every reply of\n"
     "the board carries, queue level).\n"
     "Ctrl-C: feed hold (the board slows to rest along the path in 49 ms), then stop (queue\n"
@@ -64,7 +70,7 @@ double positive(const Args& a, const char* name, const char* fallback) {
   return x;
 }
 
-std::vector<board::Chord3> plan_chords(const std::string& file, const planner::Config& cfg, double spm) {
+planner::Plan read_plan(const std::string& file, const planner::Config& cfg) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw UsageError("cannot read '" + file + "'");
   std::stringstream buf;
@@ -82,6 +88,11 @@ std::vector<board::Chord3> plan_chords(const std::string& file, const planner::C
     throw UsageError(file + ": " + e.what());
   }
   if (plan.total_time / cfg.cycle_s > 2e7) throw UsageError(file + ": more than 2e7 cycles, more than this tool plans");
+  return plan;
+}
+
+std::vector<board::Chord3> plan_chords(const std::string& file, const planner::Config& cfg, double spm) {
+  const planner::Plan plan = read_plan(file, cfg);
   std::vector<board::Chord3> out;
   for (const auto& c : planner::chords_in_steps(planner::interpolate(plan), spm)) out.push_back({c.dx, c.dy, c.dz});
   return out;
@@ -117,15 +128,57 @@ int report(const board::StreamResult& r, std::size_t n) {
   return (r.end == r.expected && r.chords == n) ? 0 : 1;
 }
 
+// --hw-arcs: paper A's blocks (tb/board/stream_blocks.hpp).
+int run_hw_arcs(const Args& a, const std::string& port, unsigned baud, const planner::Config& pc, double spm,
+                const board::StreamConfig& sc, const board::LinkTimes& lt) {
+  const std::string file = a.positional()[0];
+  board::BlockProgram prog;
+  try {
+    prog = board::to_blocks(read_plan(file, pc), spm);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(file + ": " + e.what());
+  }
+  if (auto path = a.option("blocks")) {
+    std::ofstream out(*path);
+    for (const auto& b : prog.blocks) out << b.args() << " # line " << b.line << "\n";
+    if (!out) throw UsageError("--blocks: cannot write '" + *path + "'");
+  }
+  try {
+    board::SerialPort sp(port, baud, lt.dead_s);
+    board::LinkClient link(sp, lt);
+    std::signal(SIGINT, on_sigint);
+    const bool tty = isatty(STDERR_FILENO), bar = a.flag("progress") || (!a.flag("quiet") && tty);
+    auto progress = [&](const board::Progress& p) {
+      if (bar) show_progress(p, spm, tty);
+    };
+    const auto r = board::stream_blocks(link, sp, prog, sc, progress, &g_stop);
+    if (bar && tty) std::fputs("\n", stderr);
+    std::printf("stream: %u of %zu blocks run (paper A, --hw-arcs), watchdog trips %u%s\n", r.chords,
+                prog.blocks.size(), r.wdog_trips, r.stopped ? ", STOPPED by Ctrl-C" : "");
+    std::printf("stream: link %llu frames, %llu resends, %llu refused, %llu bad replies\n",
+                static_cast<unsigned long long>(r.link.frames), static_cast<unsigned long long>(r.link.resends),
+                static_cast<unsigned long long>(r.link.refused), static_cast<unsigned long long>(r.link.bad_replies));
+    std::printf("stream: position %lld %lld %lld steps (program: %lld %lld %lld)\n", static_cast<long long>(r.end[0]),
+                static_cast<long long>(r.end[1]), static_cast<long long>(r.end[2]),
+                static_cast<long long>(r.expected[0]), static_cast<long long>(r.expected[1]),
+                static_cast<long long>(r.expected[2]));
+    if (r.stopped) return 130;
+    return (r.end == r.expected && r.chords == prog.blocks.size()) ? 0 : 1;
+  } catch (const board::LinkError& e) {
+    throw UsageError(port + ": " + e.what());
+  }
+}
+
 int run_stream(const std::vector<std::string>& argv) {
   const Args a(argv, {"quiet", "progress", "hw-arcs"},
-               {"port", "baud", "steps-per-mm", "accel", "cycle", "step-len", "step-space", "watchdog", "timeout"});
+               {"port", "baud", "steps-per-mm", "accel", "cycle", "step-len", "step-space", "watchdog", "timeout",
+                "blocks"});
   if (a.help()) {
     std::fputs(kHelp, stdout);
     return 0;
   }
   a.expect_positional({"FILE"});
-  if (a.flag("hw-arcs")) throw UsageError("--hw-arcs: paper A mode is not implemented yet (docs/board.md)");
+  if (a.option("blocks") && !a.flag("hw-arcs")) throw UsageError("--blocks needs --hw-arcs");
   const auto port = a.option("port");
   if (!port) throw UsageError("--port DEVICE is required (e.g. /dev/ttyUSB1, or the path board-sim prints)");
   const auto baud = static_cast<unsigned>(parse_int(a.option_or("baud", "1000000"), "--baud"));
@@ -144,6 +197,7 @@ int run_stream(const std::vector<std::string>& argv) {
   sc.wdog_clocks = static_cast<std::uint32_t>(positive(a, "watchdog", "50") * sc.clock_hz / 1e3);
   board::LinkTimes lt;
   lt.dead_s = positive(a, "timeout", "3");
+  if (a.flag("hw-arcs")) return run_hw_arcs(a, *port, baud, pc, spm, sc, lt);
   const auto chords = plan_chords(a.positional()[0], pc, spm);
   try {
     board::SerialPort sp(*port, baud, lt.dead_s);

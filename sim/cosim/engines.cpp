@@ -227,6 +227,7 @@ CoreCosimEngine::CoreCosimEngine(sc_core::sc_module_name n, double f_clk_hz, Ste
   top_->o_wb_dat(rdat_);
   top_->o_wb_ack(ack_);
   top_->i_cmd_pin(i_cmd);
+  top_->i_cmd_ce(one_);
   top_->o_step_x(step_x_);
   top_->o_dir_x(dir_x_);
   top_->o_step_y(step_y_);

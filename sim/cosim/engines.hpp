@@ -209,6 +209,7 @@ class CoreCosimEngine final : public VerilatedCosimEngine {
   sc_core::sc_signal<std::uint32_t, sc_core::SC_MANY_WRITERS> adr_{"adr"}, wdat_{"wdat"};
   sc_core::sc_signal<std::uint32_t> rdat_{"rdat"};
   sc_core::sc_signal<bool> pulse_{"pulse"}, pulse_y_{"pulse_y"}, pulse_neg_{"pulse_neg"}, busy_{"busy"};
+  sc_core::sc_signal<bool> one_{"one", true};  // i_cmd_ce: no time scale here
   std::unique_ptr<Vcosim_interp> top_;
   std::vector<Placed> moves_;
   // Moves that did not fit the queue at begin_case: pushed by feeder_thread

@@ -60,6 +60,7 @@ class LinkClient {
   void drain();  // until every posted frame is acknowledged
 
   std::size_t in_flight() const { return out_.size(); }
+  std::uint8_t next_seq() const { return next_seq_; }  // the number post() gives the next frame
   std::size_t chords_in_flight() const;
   const Reply& last() const { return last_; }
   const LinkStats& stats() const { return stats_; }

@@ -81,6 +81,7 @@ class AxisMonitor {
 class TopHarness : public tb::Harness<Vinterp_top> {
  public:
   TopHarness() : mx_(Axis::X, &timing), my_(Axis::Y, &timing) {
+    top_->i_cmd_ce = 1;  // no time scale here (the board's, tb/board)
     hold_reset(2);
     tick();
   }
@@ -163,6 +164,7 @@ class TopHarness : public tb::Harness<Vinterp_top> {
   Timing timing;
   std::vector<std::string> errors;
   std::uint64_t core_pulses = 0, busy_cycles = 0;
+  unsigned ce_period = 0;  // i_cmd_ce: 0 always high; N high one clock in N
 
  private:
   // Every clock: the pins through the timing monitors, the core's counts.
@@ -171,6 +173,7 @@ class TopHarness : public tb::Harness<Vinterp_top> {
     my_.sample(clocks(), top_->o_step_y, top_->o_dir_y, errors);
     if (top_->o_pulse) ++core_pulses;
     if (top_->o_busy) ++busy_cycles;
+    if (ce_period != 0) top_->i_cmd_ce = clocks() % ce_period == 0;
   }
 
   Vinterp_top* const top_ = &top();
@@ -301,6 +304,26 @@ TEST(InterpTop, FeedGeneratorMovesWithinTiming) {
   const std::uint32_t s = status(h);
   EXPECT_FALSE(s & INTERP_STATUS_OVERRUN_MASK);
   EXPECT_EQ(h.read(INTERP_REG_OVR_COUNT), 0u);
+}
+
+// The command source's clock enable (the board's time scale, its feed
+// hold: docs/board.md): the feed generator and the every-clock source
+// advance only on it. High one clock in 3, a move at a feed takes 3 times
+// as long; one clock in 8 with a command every clock, 8 clocks a pulse;
+// the pulses are the model's.
+TEST(InterpTop, CommandClockEnableScalesTheCommandRate) {
+  const std::vector<Move> moves{Move::line(40, -25), Move::arc(30, 0, 0, 30, Sense::CCW)};
+  TopHarness full, slow, every;
+  for (TopHarness* h : {&full, &slow, &every}) h->set_timing({1, 1, 1, 1});
+  const auto [busy1, pulses1] = run_and_check(full, moves, 2, 0x10000000u, 200000);
+  slow.ce_period = 3;
+  const auto [busy3, pulses3] = run_and_check(slow, moves, 2, 0x10000000u, 600000);
+  EXPECT_EQ(pulses1, pulses3);
+  EXPECT_NEAR(static_cast<double>(busy3) / static_cast<double>(busy1), 3.0, 0.05);
+  every.ce_period = 8;
+  const auto [busy8, pulses8] = run_and_check(every, moves, 3, 0, 200000);
+  EXPECT_NEAR(static_cast<double>(busy8) / static_cast<double>(pulses8), 8.0, 0.1);
+  EXPECT_EQ(every.read(INTERP_REG_OVR_COUNT), 0u);
 }
 
 // Every clock a command pulse, far faster than the output timing allows:

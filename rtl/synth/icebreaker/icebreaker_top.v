@@ -101,7 +101,7 @@ module icebreaker_top (
       .i_clk(CLK), .i_rst(rst),
       .i_wb_cyc(stb_q), .i_wb_stb(stb_q), .i_wb_we(1'b1), .i_wb_adr(adr), .i_wb_dat(dat),
       .o_wb_dat(unused_rdat), .o_wb_ack(ack),
-      .i_cmd_pin(1'b0),
+      .i_cmd_pin(1'b0), .i_cmd_ce(1'b1),
       .o_step_x(step_x), .o_dir_x(dir_x), .o_step_y(step_y), .o_dir_y(dir_y),
       .o_pulse(unused_pulse), .o_pulse_y(unused_pulse_y), .o_pulse_neg(unused_pulse_neg), .o_busy(busy)
   );
