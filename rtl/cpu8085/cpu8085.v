@@ -79,6 +79,8 @@ module cpu8085 (
   // Register file indices: the opcode's register field; 6 (M) holds F.
   localparam [2:0] R_B = 3'd0, R_C = 3'd1, R_D = 3'd2, R_E = 3'd3;
   localparam [2:0] R_H = 3'd4, R_L = 3'd5, R_F = 3'd6, R_A = 3'd7;
+  // The ALU: alu_exec() and its ALU_* operation codes.
+`include "cpu8085_alu.vh"
 
   // ---------------------------------------------------------------- state
   // Architectural registers B C D E H L F A (F at the M index).
@@ -229,8 +231,7 @@ module cpu8085 (
   reg [2:0] seq_cyc, seq_asel;
   reg       seq_last;
   reg [7:0] seq_dout;
-  // Register pair of LXI / DAD / INX / DCX / PUSH / POP (3: SP).
-  wire [15:0] rp_val = (rp == 2'd0) ? bc : (rp == 2'd1) ? de : (rp == 2'd2) ? hl : sp_q;
+  // PUSH's bytes (rp 3: PSW).
   wire [7:0] push_hi = (rp == 2'd3) ? reg_a : rf[{rp, 1'b0}];
   wire [7:0] push_lo = (rp == 2'd3) ? reg_f : rf[{rp, 1'b1}];
 
@@ -365,35 +366,31 @@ module cpu8085 (
   assign o_tstate = t_q;
 
   // ----------------------------------------------------------------- ALU
-  reg  [4:0] alu_op;
-  reg  [7:0] alu_b;
-  wire [7:0] alu_res, alu_f;
-  always @* begin
-    alu_op = {2'b00, ddd};
-    alu_b  = (sss == 3'd6) ? i_din : rf[sss];
-    if (ir_q[7:6] == 2'b00) begin
-      alu_b = (ddd == 3'd6) ? i_din : rf[ddd];
-      case (sss)
-        3'b100:  alu_op = 5'd8;  // INR
-        3'b101:  alu_op = 5'd9;  // DCR
-        default: alu_op = 5'd10 + {2'b00, ddd};  // RLC RRC RAL RAR DAA CMA STC CMC
-      endcase
+  // The ALU operation of instruction ir on operand b (its register or the
+  // byte read), A = a, F = f: {result, F}. ALU group (00..3F excluded): the
+  // operation is bits 5:3; 00 DDD 10x INR / DCR; 00 DDD 111 the
+  // accumulator group.
+  function [15:0] alu_ir;
+    input [7:0] ir;
+    input [7:0] b;
+    input [7:0] a;
+    input [7:0] f;
+    reg   [4:0] op;
+    begin
+      op = {2'b00, ir[5:3]};
+      if (ir[7:6] == 2'b00) begin
+        case (ir[2:0])
+          3'b100:  op = ALU_INR;
+          3'b101:  op = ALU_DCR;
+          default: op = ALU_RLC + {2'b00, ir[5:3]};  // RLC RRC RAL RAR DAA CMA STC CMC
+        endcase
+      end
+      alu_ir = alu_exec(op, a, b, f);
     end
-  end
-  cpu8085_alu u_alu (
-      .i_op (alu_op),
-      .i_a  (reg_a),
-      .i_b  (alu_b),
-      .i_f  (reg_f),
-      .o_res(alu_res),
-      .o_f  (alu_f)
-  );
-
-  wire [16:0] dad_sum = {1'b0, hl} + {1'b0, rp_val};
-  wire [15:0] rp_inc = rp_val + 16'd1;
-  wire [15:0] rp_dec = rp_val - 16'd1;
-  wire [ 7:0] rim_val = {i_sid, r75_lat, i_rst65, i_rst55,
-                         rim_after_trap_q ? ie_before_trap_q : ie_q, masks_q};
+  endfunction
+  // The ALU's register operand: DDD for INR / DCR, SSS otherwise (6: M,
+  // the byte read).
+  wire [2:0] alu_src = (ir_q[7:6] == 2'b00) ? ddd : sss;
 
   // ------------------------------------------------------------ registers
   // Each register (or small group) below has its own block; updates happen
@@ -517,22 +514,6 @@ module cpu8085 (
     end
   end
 
-  // Temporary pair W Z: operand bytes (Z first), INR M / DCR M's result,
-  // SHLD / LHLD's address + 1.
-  always @(posedge i_clk) begin
-    if (i_rst) begin
-      w_q <= 8'h00;
-      z_q <= 8'h00;
-    end else if (!i_dbg_load && end_mc) begin
-      if (mc_1 && (is_mvi_m | is_lxi | is_direct | is_pop_ret | is_jcc | is_jmp |
-                   is_io | is_xthl | is_calls))
-        z_q <= i_din;
-      if (mc_1 && is_incdec_m) z_q <= alu_res;
-      if (mc_2 && (is_direct | is_xthl | is_calls)) w_q <= i_din;
-      if (mc_3 && is_direct && !ir_q[4]) {w_q, z_q} <= wz + 16'd1;
-    end
-  end
-
   // Program counter: +1 for the opcode and each operand byte read at PC;
   // +2 over the address of a Jcc / Ccc not taken (not read; an INTR
   // acknowledge supplies no address to skip); jumps, calls, returns, RST.
@@ -560,8 +541,8 @@ module cpu8085 (
     else begin
       if (end_of && (is_push | is_rst)) sp_q <= sp_q - 16'd1;
       if (end_of && is_sphl) sp_q <= hl;
-      if (end_of && is_inx && rp == 2'd3) sp_q <= rp_inc;
-      if (end_of && is_dcx && rp == 2'd3) sp_q <= rp_dec;
+      if (end_of && is_inx && rp == 2'd3) sp_q <= sp_q + 16'd1;
+      if (end_of && is_dcx && rp == 2'd3) sp_q <= sp_q - 16'd1;
       if (end_mc) begin
         if (mc_2 && is_lxi && rp == 2'd3) sp_q <= {i_din, z_q};
         if (is_pop_ret) sp_q <= sp_q + 16'd1;
@@ -571,73 +552,75 @@ module cpu8085 (
     end
   end
 
-  // Register file write ports, decoded from the class: one register
-  // (rf_we), one pair B / D / H (pair_we), the flags (f_we), and XCHG's
-  // swap of DE and HL.
-  reg        rf_we, pair_we, f_we;
-  reg [ 2:0] rf_wa;
-  reg [ 7:0] rf_wd, f_wd;
-  reg [ 1:0] pair_wa;
-  reg [15:0] pair_wd;
-
-  // One register: MOV, MVI, INR r / DCR r, accumulator results, loads.
-  always @* begin
-    rf_we = 1'b0;
-    rf_wa = R_A;
-    rf_wd = alu_res;
-    if (end_of) begin
-      if (is_mov_rr) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, rf[sss]};
-      if (is_alu_r) rf_we = (ddd != 3'd7);  // CMP writes only F
-      if (is_incdec_r) {rf_we, rf_wa} = {1'b1, ddd};
-      if (is_acc) rf_we = 1'b1;
-      if (is_rim) {rf_we, rf_wd} = {1'b1, rim_val};
-    end
-    if (end_mc) begin
-      if (is_mov_rm || is_mvi_r) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, i_din};
-      if (is_alu_m || is_alu_i) rf_we = (ddd != 3'd7);
-      if (is_ldax || (is_in && mc_2)) {rf_we, rf_wd} = {1'b1, i_din};
-      if (is_direct && mc_3 && ir_q[3]) {rf_we, rf_wa, rf_wd} = {1'b1, ir_q[4] ? R_A : R_L, i_din};
-      if (is_direct && mc_4 && ir_q[3]) {rf_we, rf_wa, rf_wd} = {1'b1, R_H, i_din};
-      if (is_pop && mc_2 && rp == 2'd3) {rf_we, rf_wd} = {1'b1, i_din};
-    end
-  end
-
-  // One pair: LXI, INX, DCX, DAD, POP (not PSW), XTHL.
-  always @* begin
-    pair_we = 1'b0;
-    pair_wa = rp;
-    pair_wd = {i_din, z_q};
-    if (end_of && rp != 2'd3) begin
-      if (is_inx) {pair_we, pair_wd} = {1'b1, rp_inc};
-      if (is_dcx) {pair_we, pair_wd} = {1'b1, rp_dec};
-    end
-    if (end_mc && mc_2 && rp != 2'd3 && (is_lxi || is_pop)) pair_we = 1'b1;
-    if (end_mc && mc_2 && is_dad) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, dad_sum[15:0]};
-    if (end_mc && mc_4 && is_xthl) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, wz};
-  end
-
-  // The flags: ALU results, DAD's carry, POP PSW.
-  always @* begin
-    f_we = 1'b0;
-    f_wd = alu_f;
-    if (end_of && (is_alu_r | is_incdec_r | is_acc)) f_we = 1'b1;
-    if (end_mc) begin
-      if (is_alu_m | is_alu_i | (is_incdec_m & mc_1)) f_we = 1'b1;
-      if (is_dad && mc_2) {f_we, f_wd} = {1'b1, reg_f[7:1], dad_sum[16]};
-      if (is_pop && mc_2 && rp == 2'd3) {f_we, f_wd} = {1'b1, z_q & 8'hD5};
-    end
-  end
-
-  // Register file B C D E H L F A.
+  // Register file B C D E H L F A. Written at the end of the cycle that
+  // produces a result (end_work), through three ports decoded from the
+  // class: one register (rf_we: MOV, MVI, INR r / DCR r, accumulator
+  // results, loads), one pair B / D / H (pair_we: LXI, INX, DCX, DAD, POP
+  // but PSW, XTHL), the flags (f_we: ALU results, DAD's carry, POP PSW),
+  // and XCHG's swap of DE and HL; the temporary pair W Z (operand bytes, Z
+  // first; INR M / DCR M's result; SHLD / LHLD's address + 1). The ports
+  // and the ALU are computed inside
+  // this block, only when a cycle ends (a Verilated model then evaluates
+  // them in one T-state of three to six, not at every clock).
   integer k;
-  always @(posedge i_clk) begin
+  always @(posedge i_clk) begin : regfile
+    reg        rf_we, pair_we, f_we;
+    reg [ 2:0] rf_wa;
+    reg [ 7:0] rf_wd, f_wd;
+    reg [ 1:0] pair_wa;
+    reg [15:0] pair_wd, pair_v, alu_v;
+    reg [16:0] dad_sum;
     if (i_rst) begin
       for (k = 0; k < 8; k = k + 1) rf[k] <= 8'h00;
+      w_q <= 8'h00;
+      z_q <= 8'h00;
     end else if (i_dbg_load) begin
       {rf[R_A], rf[R_F], rf[R_B], rf[R_C], rf[R_D], rf[R_E], rf[R_H], rf[R_L]} <= i_dbg_regs;
-    end else begin
+    end else if (end_work) begin
+      alu_v = alu_ir(ir_q, (alu_src == 3'd6) ? i_din : rf[alu_src], reg_a, reg_f);
+      pair_v = (rp == 2'd0) ? bc : (rp == 2'd1) ? de : hl;  // rp 3 (SP): not here
+      dad_sum = {1'b0, hl} + {1'b0, (rp == 2'd3) ? sp_q : pair_v};
+      {rf_we, rf_wa, rf_wd} = {1'b0, R_A, alu_v[15:8]};
+      {pair_we, pair_wa, pair_wd} = {1'b0, rp, i_din, z_q};
+      {f_we, f_wd} = {1'b0, alu_v[7:0]};
+      if (end_of) begin
+        if (is_mov_rr) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, rf[sss]};
+        if (is_alu_r) rf_we = (ddd != 3'd7);  // CMP writes only F
+        if (is_incdec_r) {rf_we, rf_wa} = {1'b1, ddd};
+        if (is_acc) rf_we = 1'b1;
+        if (is_rim)
+          {rf_we, rf_wd} = {1'b1, i_sid, r75_lat, i_rst65, i_rst55,
+                            rim_after_trap_q ? ie_before_trap_q : ie_q, masks_q};
+        if (is_inx && rp != 2'd3) {pair_we, pair_wd} = {1'b1, pair_v + 16'd1};
+        if (is_dcx && rp != 2'd3) {pair_we, pair_wd} = {1'b1, pair_v - 16'd1};
+        if (is_alu_r | is_incdec_r | is_acc) f_we = 1'b1;
+      end else begin
+        if (is_mov_rm || is_mvi_r) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, i_din};
+        if (is_alu_m || is_alu_i) rf_we = (ddd != 3'd7);
+        if (is_ldax || (is_in && mc_2)) {rf_we, rf_wd} = {1'b1, i_din};
+        if (is_direct && mc_3 && ir_q[3]) {rf_we, rf_wa, rf_wd} = {1'b1, ir_q[4] ? R_A : R_L, i_din};
+        if (is_direct && mc_4 && ir_q[3]) {rf_we, rf_wa, rf_wd} = {1'b1, R_H, i_din};
+        if (is_pop && mc_2 && rp == 2'd3) {rf_we, rf_wd} = {1'b1, i_din};
+        if (mc_2 && rp != 2'd3 && (is_lxi || is_pop)) pair_we = 1'b1;
+        if (mc_2 && is_dad) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, dad_sum[15:0]};
+        if (mc_4 && is_xthl) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, wz};
+        if (is_alu_m | is_alu_i | (is_incdec_m & mc_1)) f_we = 1'b1;
+        if (is_dad && mc_2) {f_we, f_wd} = {1'b1, reg_f[7:1], dad_sum[16]};
+        if (is_pop && mc_2 && rp == 2'd3) {f_we, f_wd} = {1'b1, z_q & 8'hD5};
+        if (mc_1 && (is_mvi_m | is_lxi | is_direct | is_pop_ret | is_jcc | is_jmp |
+                     is_io | is_xthl | is_calls))
+          z_q <= i_din;
+        if (mc_1 && is_incdec_m) z_q <= alu_v[15:8];
+        if (mc_2 && (is_direct | is_xthl | is_calls)) w_q <= i_din;
+        if (mc_3 && is_direct && !ir_q[4]) {w_q, z_q} <= wz + 16'd1;
+      end
+`ifdef FORMAL
+      // The byte and pair write ports never address F (index 6, pair 3).
+      assert (!rf_we || rf_wa != R_F);
+      assert (!pair_we || pair_wa != 2'd3);
+`endif
       // F is written by its own port only: the byte and pair ports never
-      // address it (asserted below), the guards tell synthesis so.
+      // address it (asserted above), the guards tell synthesis so.
       if (rf_we && rf_wa != R_F) rf[rf_wa] <= rf_wd;
       if (pair_we && pair_wa != 2'd3) begin
         rf[{pair_wa, 1'b0}] <= pair_wd[15:8];
@@ -704,9 +687,6 @@ module cpu8085 (
       assert (kind_q != K_IDLE || mc_q == 3'd0);
     end
     if (f_run) begin
-      // The byte and pair write ports never address F (index 6, pair 3).
-      assert (!rf_we || rf_wa != R_F);
-      assert (!pair_we || pair_wa != 2'd3);
       // At most one bus strobe.
       assert ({1'b0, o_rd} + {1'b0, o_wr} + {1'b0, o_inta} <= 2'd1);
       // A unit ends after the data sheet's number of T-states: an

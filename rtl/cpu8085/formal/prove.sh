@@ -31,6 +31,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 src=$(cd "$here/.." && pwd)
 # The CPU's sources, from its one file list.
 sources=$("$src/../filelist" "$src/cpu8085.f" | tr '\n' ' ')
+incdirs=$("$src/../filelist" --incdirs "$src/cpu8085.f" | sed 's/^/-I/' | tr '\n' ' ')
 mkdir -p "$out"
 ulimit -v 4000000
 
@@ -41,7 +42,7 @@ aig() {
   local srcs=$sources
   [ $# -lt 3 ] || srcs=${srcs/$src\/$2/$3}
   timeout 300 yosys -q -l "$out/$1.yosys.log" -p "
-    read_verilog -formal $srcs
+    read_verilog -formal $incdirs $srcs
     prep -top cpu8085
     flatten
     delete -output cpu8085/o:*
