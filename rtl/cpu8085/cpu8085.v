@@ -144,56 +144,15 @@ module cpu8085 (
   wire intr_mode = (kind == K_INTR);
 
   // ------------------------------------------------------------ decode
-  // The instruction register decoded once into one-hot classes.
-  wire is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i;
-  wire is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc;
-  wire is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct;
-  wire is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp;
-  wire is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei;
-  wire is_ccc, is_call, is_push, is_rst, of6, of_only;
-  cpu8085_decode u_dec (
-      .i_ir         (ir_q),
-      .o_is_hlt     (is_hlt),
-      .o_is_mov_rr  (is_mov_rr),
-      .o_is_mov_mr  (is_mov_mr),
-      .o_is_mov_rm  (is_mov_rm),
-      .o_is_alu_r   (is_alu_r),
-      .o_is_alu_m   (is_alu_m),
-      .o_is_alu_i   (is_alu_i),
-      .o_is_mvi_r   (is_mvi_r),
-      .o_is_mvi_m   (is_mvi_m),
-      .o_is_incdec_r(is_incdec_r),
-      .o_is_incdec_m(is_incdec_m),
-      .o_is_acc     (is_acc),
-      .o_is_lxi     (is_lxi),
-      .o_is_dad     (is_dad),
-      .o_is_inx     (is_inx),
-      .o_is_dcx     (is_dcx),
-      .o_is_stax    (is_stax),
-      .o_is_ldax    (is_ldax),
-      .o_is_direct  (is_direct),
-      .o_is_rim     (is_rim),
-      .o_is_sim     (is_sim),
-      .o_is_rcc     (is_rcc),
-      .o_is_ret     (is_ret),
-      .o_is_pop     (is_pop),
-      .o_is_jcc     (is_jcc),
-      .o_is_jmp     (is_jmp),
-      .o_is_out     (is_out),
-      .o_is_in      (is_in),
-      .o_is_xthl    (is_xthl),
-      .o_is_xchg    (is_xchg),
-      .o_is_pchl    (is_pchl),
-      .o_is_sphl    (is_sphl),
-      .o_is_di      (is_di),
-      .o_is_ei      (is_ei),
-      .o_is_ccc     (is_ccc),
-      .o_is_call    (is_call),
-      .o_is_push    (is_push),
-      .o_is_rst     (is_rst),
-      .o_of6        (of6),
-      .o_of_only    (of_only)
-  );
+  // The opcode decoded into one-hot classes (cpu8085_decode.vh), registered
+  // with the instruction register: once per instruction.
+`include "cpu8085_decode.vh"
+  reg is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i;
+  reg is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc;
+  reg is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct;
+  reg is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp;
+  reg is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei;
+  reg is_ccc, is_call, is_push, is_rst, of6, of_only;
   // Classes that share their cycle list.
   wire is_mem_rmw = is_mvi_m | is_incdec_m;  // MR (or operand) then MW (HL)
   wire is_pop_ret = is_rcc | is_ret | is_pop;  // two reads at SP
@@ -504,13 +463,36 @@ module cpu8085 (
     end
   end
 
-  // Instruction register: the opcode at the end of T3 of the fetch / INTA;
-  // a TRAP / RST x.5 acknowledge runs as RST 7 (FF).
+  // Instruction register and its decoded classes: the opcode at the end of
+  // T3 of the fetch / INTA; a TRAP / RST x.5 acknowledge runs as RST 7 (FF).
   always @(posedge i_clk) begin
-    if (i_rst) ir_q <= 8'h00;
-    else if (!i_dbg_load) begin
-      if (unit_t1 && kind_now == K_IACK) ir_q <= 8'hFF;
-      if (op_load) ir_q <= i_din;
+    if (i_rst) begin
+      ir_q <= 8'h00;
+      {is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i,
+       is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc,
+       is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct,
+       is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp,
+       is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
+       is_ccc, is_call, is_push, is_rst, of6, of_only} <= decode(8'h00);
+    end else if (!i_dbg_load) begin
+      if (unit_t1 && kind_now == K_IACK) begin
+        ir_q <= 8'hFF;
+        {is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i,
+         is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc,
+         is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct,
+         is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp,
+         is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
+         is_ccc, is_call, is_push, is_rst, of6, of_only} <= decode(8'hFF);
+      end
+      if (op_load) begin
+        ir_q <= i_din;
+        {is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i,
+         is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc,
+         is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct,
+         is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp,
+         is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
+         is_ccc, is_call, is_push, is_rst, of6, of_only} <= decode(i_din);
+      end
     end
   end
 
@@ -647,6 +629,21 @@ module cpu8085 (
     if (!f_past_valid) assume (i_rst);
     if (i_dbg_load) assume (unit_t1);
   end
+  // The registered classes.
+  wire [39:0] classes = {
+    is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i,
+    is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc,
+    is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct,
+    is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp,
+    is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
+    is_ccc, is_call, is_push, is_rst, of6, of_only};
+  // The 39 classes of decode_all (NOP included) are one-hot.
+  function f_onehot;
+    input [40:0] all;
+    begin
+      f_onehot = (all[40:2] != 39'd0) && ((all[40:2] & (all[40:2] - 39'd1)) == 39'd0);
+    end
+  endfunction
   // A clock in which the CPU runs (neither reset nor a debug load).
   wire f_run = f_past_valid && !i_rst && !i_dbg_load;
 
@@ -679,6 +676,9 @@ module cpu8085 (
 
   always @* begin
     if (f_past_valid) begin
+      // The registered classes are the decode of ir_q, one-hot.
+      assert (classes == decode(ir_q));
+      assert (f_onehot(decode_all(ir_q)));
       // The sequencer stays in range: T1..T6 in an opcode fetch / BI6,
       // T1..T3 in later cycles, at most five cycles per unit.
       assert (t_q >= 3'd1 && t_q <= 3'd6);
