@@ -33,8 +33,8 @@
 //   (rp 3: PSW), RST n (and the TRAP / RST x.5 acknowledges);
 //   of6: an opcode fetch of 6 T-states (data sheet); of_only: no cycle
 //   after the opcode fetch (Rcc: only when its condition fails).
-// decode(ir) is the same without the NOP class (bit 19 of decode_all),
-// which has no work of its own: what cpu8085.v registers.
+// decode(ir) is the classes without NOP (no work of its own): what
+// cpu8085.v registers; decode_of(ir) what its opcode fetch needs.
 function [40:0] decode_all;
   input [7:0] ir;
   reg [1:0] grp;
@@ -138,14 +138,28 @@ function [40:0] decode_all;
   end
 endfunction
 
-// The classes without NOP, of6, of_only.
-function [39:0] decode;
+// The classes without NOP, of6 and of_only: what cpu8085.v registers.
+function [37:0] decode;
   input [7:0] ir;
   reg [20:0] hi;
   reg        unused_nop;  // NOP: no work of its own
-  reg [18:0] lo;
+  reg [16:0] lo;
+  reg [ 1:0] unused_of;   // of6, of_only: decode_of
   begin
-    {hi, unused_nop, lo} = decode_all(ir);
+    {hi, unused_nop, lo, unused_of} = decode_all(ir);
     decode = {hi, lo};
+  end
+endfunction
+
+// The opcode fetch of op: {of6, of_only, Rcc}.
+function [2:0] decode_of;
+  input [7:0] op;
+  reg [21:0] unused_hi;  // the classes before Rcc
+  reg        rcc;
+  reg [15:0] unused_lo;  // the classes after Rcc
+  reg        of6, of_only;
+  begin
+    {unused_hi, rcc, unused_lo, of6, of_only} = decode_all(op);
+    decode_of = {of6, of_only, rcc};
   end
 endfunction
