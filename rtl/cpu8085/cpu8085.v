@@ -164,10 +164,9 @@ module cpu8085 (
   reg is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei;
   reg is_ccc, is_call, is_push, is_rst;
   // Classes that share their cycle list.
-  wire is_mem_rmw = is_mvi_m | is_incdec_m;  // MR (or operand) then MW (HL)
-  wire is_pop_ret = is_rcc | is_ret | is_pop;  // two reads at SP
-  wire is_calls = is_ccc | is_call;  // MR MR MW MW
-  wire is_io = is_out | is_in;
+  reg is_mem_rmw;  // MVI M, INR / DCR M: MR (or operand) then MW (HL)
+  reg is_pop_ret;  // Rcc RET POP: two reads at SP
+  // Classes that share their cycle list.
   // Where the cycle index stands.
   wire mc_1 = (mc_q == 3'd1);
   wire mc_2 = (mc_q == 3'd2);
@@ -192,10 +191,14 @@ module cpu8085 (
       endcase
     end
   endfunction
-  wire [3:0] szpc = {reg_f[7], reg_f[6], reg_f[2], reg_f[0]};
-  // The current instruction's condition (no conditional instruction
-  // changes F).
-  wire cond = cond_of(ddd, szpc);
+  // The condition ccc (an opcode's bits 5:3) on the current flags (no conditional
+  // instruction changes F).
+  function cond_ir;
+    input [2:0] ccc;
+    begin
+      cond_ir = cond_of(ccc, {reg_f[7], reg_f[6], reg_f[2], reg_f[0]});
+    end
+  endfunction
 
   // ------------------------------------------------ machine cycle sequence
   // The cycle after the opcode fetch, cycle index mc = 1..4, of the current
@@ -220,9 +223,9 @@ module cpu8085 (
       if (is_stax | is_ldax) seq_asel = ir_q[4] ? A_DE : A_BC;
       if (is_direct) seq_asel = (mc <= 3'd2) ? A_PC : A_WZ;
       if (is_pop_ret | is_push | is_rst) seq_asel = A_SP;
-      if (is_io) seq_asel = (mc == 3'd1) ? A_PC : A_ZZ;
+      if (is_out | is_in) seq_asel = (mc == 3'd1) ? A_PC : A_ZZ;
       if (is_xthl) seq_asel = (mc == 3'd1 || mc == 3'd4) ? A_SP : A_SP1;  // H to SP+1 first
-      if (is_calls) seq_asel = (mc <= 3'd2) ? A_PC : A_SP;
+      if (is_ccc | is_call) seq_asel = (mc <= 3'd2) ? A_PC : A_SP;
     end
   endfunction
 
@@ -239,8 +242,8 @@ module cpu8085 (
       if (is_mem_rmw) seq_cyc = at_1 ? CY_MR : CY_MW;
       if (is_dad) seq_cyc = CY_BI;  // two bus idle cycles
       if (is_direct) seq_cyc = (at_le2 || ir_q[3]) ? CY_MR : CY_MW;
-      if (is_io) seq_cyc = at_1 ? CY_MR : (is_in ? CY_IOR : CY_IOW);
-      if (is_xthl | is_calls) seq_cyc = at_le2 ? CY_MR : CY_MW;
+      if (is_out | is_in) seq_cyc = at_1 ? CY_MR : (is_in ? CY_IOR : CY_IOW);
+      if (is_xthl | (is_ccc | is_call)) seq_cyc = at_le2 ? CY_MR : CY_MW;
       if (intr_mode && seq_cyc == CY_MR && seq_asel(mc) == A_PC) seq_cyc = CY_INA;
     end
   endfunction
@@ -254,7 +257,7 @@ module cpu8085 (
       if (is_mem_rmw) seq_dsel = D_Z;
       if (is_direct) seq_dsel = ir_q[4] ? D_A : (mc == 3'd3) ? D_L : D_H;
       if (is_xthl) seq_dsel = (mc == 3'd3) ? D_H : D_L;
-      if (is_calls) seq_dsel = (mc == 3'd3) ? D_PCH : D_PCL;
+      if (is_ccc | is_call) seq_dsel = (mc == 3'd3) ? D_PCH : D_PCL;
       if (is_rst) seq_dsel = (mc == 3'd1) ? D_PCH : D_PCL;
       if (is_push) seq_dsel = (mc == 3'd1) ? D_PUSH_HI : D_PUSH_LO;
     end
@@ -268,12 +271,12 @@ module cpu8085 (
     begin
       {at_1, at_2, at_3, at_4} = {mc == 3'd1, mc == 3'd2, mc == 3'd3, mc == 3'd4};
       seq_last = 1'b1;
-      if (is_mem_rmw | is_lxi | is_dad | is_pop_ret | is_jmp | is_io) seq_last = at_2;
+      if (is_mem_rmw | is_lxi | is_dad | is_pop_ret | is_jmp | (is_out | is_in)) seq_last = at_2;
       if (is_push | is_rst) seq_last = at_2;
-      if (is_jcc) seq_last = at_2 || !cond;
+      if (is_jcc) seq_last = at_2 || !cond_ir(ddd);
       if (is_direct) seq_last = ir_q[4] ? at_3 : at_4;
       if (is_xthl) seq_last = at_4;
-      if (is_calls) seq_last = at_4 || (at_1 && is_ccc && !cond);
+      if (is_ccc | is_call) seq_last = at_4 || (at_1 && is_ccc && !cond_ir(ddd));
     end
   endfunction
 
@@ -284,7 +287,7 @@ module cpu8085 (
     reg of6, of_only, rcc;
     begin
       {of6, of_only, rcc} = decode_of(op);
-      of_end = {of6 ? 3'd6 : 3'd4, of_only | (rcc & ~cond_of(op[5:3], szpc))};
+      of_end = {of6 ? 3'd6 : 3'd4, of_only | (rcc & ~cond_ir(op[5:3]))};
     end
   endfunction
 
@@ -304,31 +307,40 @@ module cpu8085 (
   // The opcode arrives at the end of T3 of the opcode fetch / INTA.
   wire op_load = (mc_q == 3'd0) && (t_q == 3'd3) && (kind == K_INSTR || kind == K_INTR);
 
-  // Bus outputs: the address and write data from the registered sources;
-  // the strobes and o_io are registers of the sequencer.
-  always @* begin
-    case (asel_q)
-      A_HL: o_addr = hl;
-      A_BC: o_addr = bc;
-      A_DE: o_addr = de;
-      A_WZ: o_addr = wz;
-      A_SP: o_addr = sp_q;
-      A_SP1: o_addr = sp_q + 16'd1;
-      A_ZZ: o_addr = {z_q, z_q};
-      default: o_addr = pc_q;
-    endcase
-    case (dsel_q)
-      D_SSS: o_dout = rf[sss];
-      D_Z: o_dout = z_q;
-      D_L: o_dout = rf[R_L];
-      D_H: o_dout = rf[R_H];
-      D_PCH: o_dout = pc_q[15:8];
-      D_PCL: o_dout = pc_q[7:0];
-      D_PUSH_HI: o_dout = (rp == 2'd3) ? reg_a : rf[{rp, 1'b0}];
-      D_PUSH_LO: o_dout = (rp == 2'd3) ? reg_f : rf[{rp, 1'b1}];
-      default: o_dout = reg_a;
-    endcase
-  end
+  // Bus outputs: the address and write data, registered by the sequencer
+  // at the end of a cycle's first T-state from its sources (valid from T2,
+  // the strobes' T-state, to the cycle's end).
+  function [15:0] addr_of;
+    input [2:0] asel;
+    begin
+      case (asel)
+        A_HL: addr_of = {rf[R_H], rf[R_L]};
+        A_BC: addr_of = {rf[R_B], rf[R_C]};
+        A_DE: addr_of = {rf[R_D], rf[R_E]};
+        A_WZ: addr_of = {w_q, z_q};
+        A_SP: addr_of = sp_q;
+        A_SP1: addr_of = sp_q + 16'd1;
+        A_ZZ: addr_of = {z_q, z_q};
+        default: addr_of = pc_q;
+      endcase
+    end
+  endfunction
+  function [7:0] dout_of;
+    input [3:0] dsel;
+    begin
+      case (dsel)
+        D_SSS: dout_of = rf[sss];
+        D_Z: dout_of = z_q;
+        D_L: dout_of = rf[R_L];
+        D_H: dout_of = rf[R_H];
+        D_PCH: dout_of = pc_q[15:8];
+        D_PCL: dout_of = pc_q[7:0];
+        D_PUSH_HI: dout_of = (rp == 2'd3) ? reg_a : rf[{rp, 1'b0}];
+        D_PUSH_LO: dout_of = (rp == 2'd3) ? reg_f : rf[{rp, 1'b1}];
+        default: dout_of = reg_a;
+      endcase
+    end
+  endfunction
   reg rd_q, wr_q, io_q, inta_q;
   assign o_rd = rd_q;
   assign o_wr = wr_q;
@@ -363,9 +375,6 @@ module cpu8085 (
       alu_ir = alu_exec(op, a, b, f);
     end
   endfunction
-  // The ALU's register operand: DDD for INR / DCR, SSS otherwise (6: M,
-  // the byte read).
-  wire [2:0] alu_src = (ir_q[7:6] == 2'b00) ? ddd : sss;
 
   // ------------------------------------------------------------ registers
   // Each register (or small group) below has its own block; updates happen
@@ -388,6 +397,8 @@ module cpu8085 (
       o_retire <= 1'b0;
       {cyc_q, asel_q, dsel_q, len_q, last_q} <= {CY_OF, A_PC, D_A, 3'd4, 1'b1};
       {rd_q, wr_q, io_q, inta_q} <= 4'b0000;
+      o_addr <= 16'h0000;
+      o_dout <= 8'h00;
     end else if (!i_dbg_load) begin
       {rd_q, wr_q, inta_q} <= 3'b000;
       o_retire <= 1'b0;
@@ -405,6 +416,7 @@ module cpu8085 (
           {len_q, last_q} <= (k == K_IACK) ? {3'd6, 1'b0} : {3'd4, 1'b1};
           rd_q <= (c == CY_OF);
           inta_q <= (c == CY_INA);
+          o_addr <= pc_q;
         end
       end else if (cyc_end_later) begin
         t_q <= 3'd1;
@@ -429,6 +441,8 @@ module cpu8085 (
         t_q <= t_q + 3'd1;
         if (op_load) {len_q, last_q} <= of_end(i_din);
         if (t_q == 3'd1) begin
+          o_addr <= addr_of(asel_q);
+          o_dout <= dout_of(dsel_q);
           rd_q <= (cyc_q == CY_MR || cyc_q == CY_IOR);
           wr_q <= (cyc_q == CY_MW || cyc_q == CY_IOW);
           inta_q <= (cyc_q == CY_INA);
@@ -539,7 +553,8 @@ module cpu8085 (
        is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct,
        is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp,
        is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
-       is_ccc, is_call, is_push, is_rst} <= decode(8'h00);
+       is_ccc, is_call, is_push, is_rst,
+       is_mem_rmw, is_pop_ret} <= decode(8'h00);
     end else if (!i_dbg_load) begin
       if (unit_t1) begin
         irq = irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr);
@@ -550,7 +565,8 @@ module cpu8085 (
            is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct,
            is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp,
            is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
-           is_ccc, is_call, is_push, is_rst} <= decode(8'hFF);
+           is_ccc, is_call, is_push, is_rst,
+       is_mem_rmw, is_pop_ret} <= decode(8'hFF);
         end
       end
       if (op_load) begin
@@ -560,7 +576,8 @@ module cpu8085 (
          is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct,
          is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp,
          is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
-         is_ccc, is_call, is_push, is_rst} <= decode(i_din);
+         is_ccc, is_call, is_push, is_rst,
+       is_mem_rmw, is_pop_ret} <= decode(i_din);
       end
     end
   end
@@ -576,9 +593,9 @@ module cpu8085 (
       if (end_of && is_pchl) pc_q <= hl;
       if (end_mc) begin
         if (cyc_q == CY_MR && asel_q == A_PC) pc_q <= pc_q + 16'd1;
-        if (mc_1 && (is_jcc | is_ccc) && !cond && !intr_mode) pc_q <= pc_q + 16'd2;
+        if (mc_1 && (is_jcc | is_ccc) && !cond_ir(ddd) && !intr_mode) pc_q <= pc_q + 16'd2;
         if (mc_2 && (is_jcc | is_jmp | is_rcc | is_ret)) pc_q <= {i_din, z_q};
-        if (mc_4 && is_calls) pc_q <= wz;
+        if (mc_4 && (is_ccc | is_call)) pc_q <= wz;
         if (mc_2 && is_rst) pc_q <= (kind == K_IACK) ? vec_q : {10'b0, ddd, 3'b000};
       end
     end
@@ -597,7 +614,7 @@ module cpu8085 (
       if (end_mc) begin
         if (mc_2 && is_lxi && rp == 2'd3) sp_q <= {i_din, z_q};
         if (is_pop_ret) sp_q <= sp_q + 16'd1;
-        if ((mc_2 || mc_3) && is_calls) sp_q <= sp_q - 16'd1;
+        if ((mc_2 || mc_3) && (is_ccc | is_call)) sp_q <= sp_q - 16'd1;
         if (mc_1 && (is_push | is_rst)) sp_q <= sp_q - 16'd1;
       end
     end
@@ -621,6 +638,7 @@ module cpu8085 (
     reg [ 1:0] pair_wa;
     reg [15:0] pair_wd, pair_v, alu_v;
     reg [16:0] dad_sum;
+    reg [ 2:0] alu_src;
     if (i_rst) begin
       for (k = 0; k < 8; k = k + 1) rf[k] <= 8'h00;
       w_q <= 8'h00;
@@ -628,6 +646,9 @@ module cpu8085 (
     end else if (i_dbg_load) begin
       {rf[R_A], rf[R_F], rf[R_B], rf[R_C], rf[R_D], rf[R_E], rf[R_H], rf[R_L]} <= i_dbg_regs;
     end else if (end_work) begin
+      // The ALU's register operand: DDD for INR / DCR, SSS otherwise (6:
+      // M, the byte read).
+      alu_src = (ir_q[7:6] == 2'b00) ? ddd : sss;
       alu_v = alu_ir(ir_q, (alu_src == 3'd6) ? i_din : rf[alu_src], reg_a, reg_f);
       pair_v = (rp == 2'd0) ? bc : (rp == 2'd1) ? de : hl;  // rp 3 (SP): not here
       dad_sum = {1'b0, hl} + {1'b0, (rp == 2'd3) ? sp_q : pair_v};
@@ -659,10 +680,10 @@ module cpu8085 (
         if (is_dad && mc_2) {f_we, f_wd} = {1'b1, reg_f[7:1], dad_sum[16]};
         if (is_pop && mc_2 && rp == 2'd3) {f_we, f_wd} = {1'b1, z_q & 8'hD5};
         if (mc_1 && (is_mvi_m | is_lxi | is_direct | is_pop_ret | is_jcc | is_jmp |
-                     is_io | is_xthl | is_calls))
+                     (is_out | is_in) | is_xthl | (is_ccc | is_call)))
           z_q <= i_din;
         if (mc_1 && is_incdec_m) z_q <= alu_v[15:8];
-        if (mc_2 && (is_direct | is_xthl | is_calls)) w_q <= i_din;
+        if (mc_2 && (is_direct | is_xthl | (is_ccc | is_call))) w_q <= i_din;
         if (mc_3 && is_direct && !ir_q[4]) {w_q, z_q} <= wz + 16'd1;
       end
 `ifdef FORMAL
@@ -699,18 +720,19 @@ module cpu8085 (
     if (i_dbg_load) assume (unit_t1);
   end
   // The registered classes.
-  wire [37:0] classes = {
+  wire [39:0] classes = {
     is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i,
     is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc,
     is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct,
     is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp,
     is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
-    is_ccc, is_call, is_push, is_rst};
+    is_ccc, is_call, is_push, is_rst,
+    is_mem_rmw, is_pop_ret};
   // The 39 classes of decode_all (NOP included) are one-hot.
   function f_onehot;
-    input [40:0] all;
+    input [42:0] all;
     begin
-      f_onehot = (all[40:2] != 39'd0) && ((all[40:2] & (all[40:2] - 39'd1)) == 39'd0);
+      f_onehot = (all[42:4] != 39'd0) && ((all[42:4] & (all[42:4] - 39'd1)) == 39'd0);
     end
   endfunction
   // A clock in which the CPU runs (neither reset nor a debug load).
@@ -743,9 +765,9 @@ module cpu8085 (
     if (is_direct) f_t_expect = ir_q[4] ? 5'd13 : 5'd16;  // STA LDA / SHLD LHLD
     if (is_xthl) f_t_expect = 5'd16;
     if (is_call) f_t_expect = 5'd18;
-    if (is_rcc) f_t_expect = cond ? 5'd12 : 5'd6;
-    if (is_jcc) f_t_expect = cond ? 5'd10 : 5'd7;
-    if (is_ccc) f_t_expect = cond ? 5'd18 : 5'd9;
+    if (is_rcc) f_t_expect = cond_ir(ddd) ? 5'd12 : 5'd6;
+    if (is_jcc) f_t_expect = cond_ir(ddd) ? 5'd10 : 5'd7;
+    if (is_ccc) f_t_expect = cond_ir(ddd) ? 5'd18 : 5'd9;
   end
 
   always @* begin

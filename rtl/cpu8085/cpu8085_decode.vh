@@ -23,7 +23,8 @@
 // The undocumented 8085 opcodes 08 10 18 28 38 CB D9 DD ED FD are 4-T
 // NOPs here (as in the ISS, docs/i8085.md): class NOP.
 //
-// decode_all(ir) = {the 39 classes, in this order, then of6, of_only}:
+// decode_all(ir) = {the 39 classes, in this order, then of6, of_only, and
+// two groups of classes that share their cycle list}:
 //   HLT, MOV r,r, MOV M,r (store to (HL)), MOV r,M (load from (HL)),
 //   ALU r (ADD ADC SUB SBB ANA XRA ORA CMP), ALU M, ALU immediate,
 //   MVI r, MVI M, INR / DCR r, INR / DCR M, accumulator group (RLC RRC RAL
@@ -32,10 +33,12 @@
 //   Jcc, JMP, OUT, IN, XTHL, XCHG, PCHL, SPHL, DI, EI, Ccc, CALL, PUSH
 //   (rp 3: PSW), RST n (and the TRAP / RST x.5 acknowledges);
 //   of6: an opcode fetch of 6 T-states (data sheet); of_only: no cycle
-//   after the opcode fetch (Rcc: only when its condition fails).
+//   after the opcode fetch (Rcc: only when its condition fails);
+//   mem_rmw: MVI M, INR / DCR M (MR or operand, then MW at HL); pop_ret:
+//   Rcc RET POP (two reads at SP).
 // decode(ir) is the classes without NOP (no work of its own): what
 // cpu8085.v registers; decode_of(ir) what its opcode fetch needs.
-function [40:0] decode_all;
+function [42:0] decode_all;
   input [7:0] ir;
   reg [1:0] grp;
   reg [2:0] f_ddd, f_sss;  // DDD, SSS
@@ -47,6 +50,7 @@ function [40:0] decode_all;
   reg dc_rim, dc_sim, dc_nop, dc_rcc, dc_ret, dc_pop, dc_jcc, dc_jmp;
   reg dc_out, dc_in, dc_xthl, dc_xchg, dc_pchl, dc_sphl, dc_di, dc_ei;
   reg dc_ccc, dc_call, dc_push, dc_rst, dc_of6, dc_of_only;
+  reg dc_mem_rmw, dc_pop_ret;
   begin
     grp = ir[7:6];
     f_ddd = ir[5:3];
@@ -129,25 +133,31 @@ function [40:0] decode_all;
                  dc_inx | dc_dcx | dc_rim | dc_sim | dc_nop |
                  dc_xchg | dc_pchl | dc_sphl | dc_di | dc_ei;
 
+    dc_mem_rmw = dc_mvi_m | dc_incdec_m;
+    dc_pop_ret = dc_rcc | dc_ret | dc_pop;
+
     decode_all = {dc_hlt, dc_mov_rr, dc_mov_mr, dc_mov_rm, dc_alu_r, dc_alu_m,
                   dc_alu_i, dc_mvi_r, dc_mvi_m, dc_incdec_r, dc_incdec_m, dc_acc,
                   dc_lxi, dc_dad, dc_inx, dc_dcx, dc_stax, dc_ldax, dc_direct,
                   dc_rim, dc_sim, dc_nop, dc_rcc, dc_ret, dc_pop, dc_jcc, dc_jmp,
                   dc_out, dc_in, dc_xthl, dc_xchg, dc_pchl, dc_sphl, dc_di, dc_ei,
-                  dc_ccc, dc_call, dc_push, dc_rst, dc_of6, dc_of_only};
+                  dc_ccc, dc_call, dc_push, dc_rst, dc_of6, dc_of_only,
+                  dc_mem_rmw, dc_pop_ret};
   end
 endfunction
 
-// The classes without NOP, of6 and of_only: what cpu8085.v registers.
-function [37:0] decode;
+// The classes without NOP, of6 and of_only, then the groups: what
+// cpu8085.v registers.
+function [39:0] decode;
   input [7:0] ir;
   reg [20:0] hi;
   reg        unused_nop;  // NOP: no work of its own
   reg [16:0] lo;
   reg [ 1:0] unused_of;   // of6, of_only: decode_of
+  reg [ 1:0] groups;
   begin
-    {hi, unused_nop, lo, unused_of} = decode_all(ir);
-    decode = {hi, lo};
+    {hi, unused_nop, lo, unused_of, groups} = decode_all(ir);
+    decode = {hi, lo, groups};
   end
 endfunction
 
@@ -158,8 +168,9 @@ function [2:0] decode_of;
   reg        rcc;
   reg [15:0] unused_lo;  // the classes after Rcc
   reg        of6, of_only;
+  reg [ 1:0] unused_groups;
   begin
-    {unused_hi, rcc, unused_lo, of6, of_only} = decode_all(op);
+    {unused_hi, rcc, unused_lo, of6, of_only, unused_groups} = decode_all(op);
     decode_of = {of6, of_only, rcc};
   end
 endfunction

@@ -78,8 +78,8 @@ decoder() {
   cat > "$out/$1.v" <<'EOF'
 module decode_onehot (input wire [7:0] i_ir);
 `include "cpu8085_decode.vh"
-  wire [40:0] all = decode_all(i_ir);
-  wire [38:0] cls = all[40:2];
+  wire [42:0] all = decode_all(i_ir);
+  wire [38:0] cls = all[42:4];
   always @* begin
     assert (cls != 39'd0);
     assert ((cls & (cls - 39'd1)) == 39'd0);
@@ -121,7 +121,7 @@ mutants=(
   "cpu8085_decode.vh|PUSH fetched in 4 T instead of 6|s/dc_ccc | dc_rcc | dc_rst | dc_push;/dc_ccc | dc_rcc | dc_rst;/"
   "cpu8085_decode.vh|MVI r also matches MVI M (classes overlap)|s/dc_mvi_r = g0 \& sss_m \& ~ddd_m;/dc_mvi_r = g0 \& sss_m;/"
   "cpu8085.v|LXI ends after its first operand byte|s/if (is_mem_rmw | is_lxi | is_dad | is_pop_ret/if (is_mem_rmw | is_dad | is_pop_ret/"
-  "cpu8085.v|Jcc not taken reads the high address byte too|s/if (is_jcc) seq_last = at_2 || !cond;/if (is_jcc) seq_last = at_2;/"
+  "cpu8085.v|Jcc not taken reads the high address byte too|s/if (is_jcc) seq_last = at_2 || !cond_ir(ddd);/if (is_jcc) seq_last = at_2;/"
   "cpu8085.v|XTHL runs one cycle too many|s/if (is_xthl) seq_last = at_4;/if (is_xthl) seq_last = (mc == 3'd5);/"
   "cpu8085.v|write strobe also in memory reads|s/wr_q <= (cyc_q == CY_MW/wr_q <= (cyc_q == CY_MR || cyc_q == CY_MW/"
 )
