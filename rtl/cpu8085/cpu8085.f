@@ -1,4 +1,3 @@
 // rtl/cpu8085: the T-state-exact Verilog 8085.
 cpu8085/cpu8085.v
-cpu8085/cpu8085_decode.v
-cpu8085/cpu8085_alu.v
++incdir+cpu8085

@@ -79,6 +79,8 @@ module cpu8085 (
   // Register file indices: the opcode's register field; 6 (M) holds F.
   localparam [2:0] R_B = 3'd0, R_C = 3'd1, R_D = 3'd2, R_E = 3'd3;
   localparam [2:0] R_H = 3'd4, R_L = 3'd5, R_F = 3'd6, R_A = 3'd7;
+  // The ALU: alu_exec() and its ALU_* operation codes.
+`include "cpu8085_alu.vh"
 
   // ---------------------------------------------------------------- state
   // Architectural registers B C D E H L F A (F at the M index).
@@ -111,219 +113,192 @@ module cpu8085 (
   wire [1:0] rp = ir_q[5:4];
 
   // ------------------------------------------------- interrupt decision
-  wire trap_edge = i_trap & ~trap_prev_q;
-  wire r75_edge = i_rst75 & ~r75_prev_q;
-  wire trap_lat = trap_latch_q | trap_edge;
-  wire r75_lat = r75_latch_q | r75_edge;
-  wire mask_ok = ie_q & ~ei_delay_q;
-  reg  [2:0] irq_now;
-  always @* begin
-    if (trap_lat & i_trap) irq_now = IRQ_TRAP;
-    else if (mask_ok & r75_lat & ~masks_q[2]) irq_now = IRQ_75;
-    else if (mask_ok & i_rst65 & ~masks_q[1]) irq_now = IRQ_65;
-    else if (mask_ok & i_rst55 & ~masks_q[0]) irq_now = IRQ_55;
-    else if (mask_ok & i_intr) irq_now = IRQ_INTR;
-    else irq_now = IRQ_NONE;
-  end
-  // The first T-state of a unit decides its kind.
-  wire unit_t1 = (mc_q == 3'd0) && (t_q == 3'd1);
-  reg  [1:0] kind_now;
-  always @* begin
-    if (irq_now == IRQ_INTR) kind_now = K_INTR;
-    else if (irq_now != IRQ_NONE) kind_now = K_IACK;
-    else if (halted_q) kind_now = K_IDLE;
-    else kind_now = K_INSTR;
-  end
+  // Taken at a unit's first T-state only (the ISS's sampling point): these
+  // functions are called inside the clocked blocks below under unit_t1, so
+  // that no logic follows the pins at every clock.
+  // The interrupt a unit starting now acknowledges, from the pins and the
+  // registered state: TRAP (latched edge and still high), then, if IE and
+  // not in the EI shadow, RST 7.5 (latch) / 6.5 / 5.5 (levels) under their
+  // masks, then INTR; IRQ_NONE otherwise.
+  function [2:0] irq_decide;
+    input trap, rst75, rst65, rst55, intr;
+    reg mask_ok;
+    begin
+      mask_ok = ie_q & ~ei_delay_q;
+      if ((trap_latch_q | ~trap_prev_q) & trap) irq_decide = IRQ_TRAP;
+      else if (mask_ok & (r75_latch_q | (rst75 & ~r75_prev_q)) & ~masks_q[2]) irq_decide = IRQ_75;
+      else if (mask_ok & rst65 & ~masks_q[1]) irq_decide = IRQ_65;
+      else if (mask_ok & rst55 & ~masks_q[0]) irq_decide = IRQ_55;
+      else if (mask_ok & intr) irq_decide = IRQ_INTR;
+      else irq_decide = IRQ_NONE;
+    end
+  endfunction
+  // The kind of a unit acknowledging irq.
+  function [1:0] kind_of;
+    input [2:0] irq;
+    begin
+      if (irq == IRQ_INTR) kind_of = K_INTR;
+      else if (irq != IRQ_NONE) kind_of = K_IACK;
+      else if (halted_q) kind_of = K_IDLE;
+      else kind_of = K_INSTR;
+    end
+  endfunction
+  // The first T-state of a unit (registered: the sequencer sets it when a
+  // unit ends).
+  reg unit_t1;
   // Everything but the sequencer's own registers works from kind_q, valid
   // from the unit's second T-state on: at the first one no cycle of an
-  // instruction or acknowledge ends, so the pins' decision (kind_now) only
-  // reaches the sequencer, not the datapath (a shorter critical path).
+  // instruction or acknowledge ends, so the pins' decision only reaches
+  // the sequencer, not the datapath (a shorter critical path).
   wire [1:0] kind = kind_q;
   wire intr_mode = (kind == K_INTR);
 
   // ------------------------------------------------------------ decode
-  // The instruction register decoded once into one-hot classes.
-  wire is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i;
-  wire is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc;
-  wire is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct;
-  wire is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp;
-  wire is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei;
-  wire is_ccc, is_call, is_push, is_rst, of6, of_only;
-  cpu8085_decode u_dec (
-      .i_ir         (ir_q),
-      .o_is_hlt     (is_hlt),
-      .o_is_mov_rr  (is_mov_rr),
-      .o_is_mov_mr  (is_mov_mr),
-      .o_is_mov_rm  (is_mov_rm),
-      .o_is_alu_r   (is_alu_r),
-      .o_is_alu_m   (is_alu_m),
-      .o_is_alu_i   (is_alu_i),
-      .o_is_mvi_r   (is_mvi_r),
-      .o_is_mvi_m   (is_mvi_m),
-      .o_is_incdec_r(is_incdec_r),
-      .o_is_incdec_m(is_incdec_m),
-      .o_is_acc     (is_acc),
-      .o_is_lxi     (is_lxi),
-      .o_is_dad     (is_dad),
-      .o_is_inx     (is_inx),
-      .o_is_dcx     (is_dcx),
-      .o_is_stax    (is_stax),
-      .o_is_ldax    (is_ldax),
-      .o_is_direct  (is_direct),
-      .o_is_rim     (is_rim),
-      .o_is_sim     (is_sim),
-      .o_is_rcc     (is_rcc),
-      .o_is_ret     (is_ret),
-      .o_is_pop     (is_pop),
-      .o_is_jcc     (is_jcc),
-      .o_is_jmp     (is_jmp),
-      .o_is_out     (is_out),
-      .o_is_in      (is_in),
-      .o_is_xthl    (is_xthl),
-      .o_is_xchg    (is_xchg),
-      .o_is_pchl    (is_pchl),
-      .o_is_sphl    (is_sphl),
-      .o_is_di      (is_di),
-      .o_is_ei      (is_ei),
-      .o_is_ccc     (is_ccc),
-      .o_is_call    (is_call),
-      .o_is_push    (is_push),
-      .o_is_rst     (is_rst),
-      .o_of6        (of6),
-      .o_of_only    (of_only)
-  );
+  // The opcode decoded into one-hot classes (cpu8085_decode.vh), registered
+  // with the instruction register: once per instruction.
+`include "cpu8085_decode.vh"
+  reg is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i;
+  reg is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc;
+  reg is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct;
+  reg is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp;
+  reg is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei;
+  reg is_ccc, is_call, is_push, is_rst;
   // Classes that share their cycle list.
-  wire is_mem_rmw = is_mvi_m | is_incdec_m;  // MR (or operand) then MW (HL)
-  wire is_pop_ret = is_rcc | is_ret | is_pop;  // two reads at SP
-  wire is_calls = is_ccc | is_call;  // MR MR MW MW
-  wire is_io = is_out | is_in;
+  reg is_mem_rmw;  // MVI M, INR / DCR M: MR (or operand) then MW (HL)
+  reg is_pop_ret;  // Rcc RET POP: two reads at SP
+  // Classes that share their cycle list.
   // Where the cycle index stands.
   wire mc_1 = (mc_q == 3'd1);
   wire mc_2 = (mc_q == 3'd2);
   wire mc_3 = (mc_q == 3'd3);
   wire mc_4 = (mc_q == 3'd4);
-  wire mc_le2 = (mc_q <= 3'd2);
 
-  // Conditions NZ Z NC C PO PE P M.
-  reg cond;
-  always @* begin
-    case (ddd)
-      3'd0: cond = ~reg_f[6];
-      3'd1: cond = reg_f[6];
-      3'd2: cond = ~reg_f[0];
-      3'd3: cond = reg_f[0];
-      3'd4: cond = ~reg_f[2];
-      3'd5: cond = reg_f[2];
-      3'd6: cond = ~reg_f[7];
-      default: cond = reg_f[7];
-    endcase
-  end
+  // Conditions NZ Z NC C PO PE P M of the opcode's bits 5:3 on the flags
+  // S Z P CY (F's bits 7 6 2 0).
+  function cond_of;
+    input [2:0] ccc;
+    input [3:0] szpc;
+    begin
+      case (ccc)
+        3'd0: cond_of = ~szpc[2];
+        3'd1: cond_of = szpc[2];
+        3'd2: cond_of = ~szpc[0];
+        3'd3: cond_of = szpc[0];
+        3'd4: cond_of = ~szpc[1];
+        3'd5: cond_of = szpc[1];
+        3'd6: cond_of = ~szpc[3];
+        default: cond_of = szpc[3];
+      endcase
+    end
+  endfunction
+  // The condition ccc (an opcode's bits 5:3) on the current flags (no conditional
+  // instruction changes F).
+  function cond_ir;
+    input [2:0] ccc;
+    begin
+      cond_ir = cond_of(ccc, {reg_f[7], reg_f[6], reg_f[2], reg_f[0]});
+    end
+  endfunction
 
   // ------------------------------------------------ machine cycle sequence
-  // For the current unit and cycle index: the cycle type (seq_cyc), its
-  // address (seq_asel) and write data (seq_dout) sources, and whether it is
-  // the unit's last cycle (seq_last). Cycle 0 is the opcode fetch (or what
-  // replaces it); the data sheet's cycle list of each class follows. Each
-  // block assigns its default first; the class flags are one-hot, so at
-  // most one of the `if`s after it applies and their order is immaterial.
-  reg [2:0] seq_cyc, seq_asel;
-  reg       seq_last;
-  reg [7:0] seq_dout;
-  // Register pair of LXI / DAD / INX / DCX / PUSH / POP (3: SP).
-  wire [15:0] rp_val = (rp == 2'd0) ? bc : (rp == 2'd1) ? de : (rp == 2'd2) ? hl : sp_q;
-  wire [7:0] push_hi = (rp == 2'd3) ? reg_a : rf[{rp, 1'b0}];
-  wire [7:0] push_lo = (rp == 2'd3) ? reg_f : rf[{rp, 1'b1}];
-
-  // Cycle type. An INTR acknowledge reads its operand bytes by INTA cycles.
-  always @* begin
-    seq_cyc = CY_MR;
-    if (mc_q == 3'd0) begin
-      case (kind)
-        K_IACK: seq_cyc = CY_BI;
-        K_IDLE: seq_cyc = CY_HLT;
-        K_INTR: seq_cyc = CY_INA;
-        default: seq_cyc = CY_OF;
-      endcase
-    end else begin
-      if (is_hlt) seq_cyc = CY_HLT;  // its fifth T-state
-      if (is_mov_mr | is_stax | is_push | is_rst) seq_cyc = CY_MW;
-      if (is_mem_rmw) seq_cyc = mc_1 ? CY_MR : CY_MW;
-      if (is_dad) seq_cyc = CY_BI;  // two bus idle cycles
-      if (is_direct) seq_cyc = (mc_le2 || ir_q[3]) ? CY_MR : CY_MW;
-      if (is_io) seq_cyc = mc_1 ? CY_MR : (is_in ? CY_IOR : CY_IOW);
-      if (is_xthl | is_calls) seq_cyc = mc_le2 ? CY_MR : CY_MW;
-      if (intr_mode && seq_cyc == CY_MR && seq_asel == A_PC) seq_cyc = CY_INA;
-    end
-  end
+  // The cycle after the opcode fetch, cycle index mc = 1..4, of the current
+  // unit: its type (seq_cyc), address (seq_asel) and write data (seq_dsel)
+  // sources, and whether it is the unit's last cycle (seq_last); the data
+  // sheet's cycle list of each class. The sequencer registers them when the
+  // cycle starts (cyc_q, asel_q, dsel_q, last_q): they are computed once
+  // per cycle, not at every clock. Each function assigns its default
+  // first; the class flags are one-hot, so at most one of the `if`s after
+  // it applies and their order is immaterial.
+  // Write data sources.
+  localparam [3:0] D_A = 4'd0, D_SSS = 4'd1, D_Z = 4'd2, D_L = 4'd3, D_H = 4'd4;
+  localparam [3:0] D_PCH = 4'd5, D_PCL = 4'd6, D_PUSH_HI = 4'd7, D_PUSH_LO = 4'd8;
 
   // Address source.
-  always @* begin
-    seq_asel = A_PC;
-    if (mc_q != 3'd0) begin
+  function [2:0] seq_asel;
+    input [2:0] mc;
+    begin
+      seq_asel = A_PC;
       if (is_mov_mr | is_mov_rm | is_alu_m) seq_asel = A_HL;
-      if (is_mem_rmw) seq_asel = (is_mvi_m && mc_1) ? A_PC : A_HL;
+      if (is_mem_rmw) seq_asel = (is_mvi_m && mc == 3'd1) ? A_PC : A_HL;
       if (is_stax | is_ldax) seq_asel = ir_q[4] ? A_DE : A_BC;
-      if (is_direct) seq_asel = mc_le2 ? A_PC : A_WZ;
+      if (is_direct) seq_asel = (mc <= 3'd2) ? A_PC : A_WZ;
       if (is_pop_ret | is_push | is_rst) seq_asel = A_SP;
-      if (is_io) seq_asel = mc_1 ? A_PC : A_ZZ;
-      if (is_xthl) seq_asel = (mc_1 || mc_4) ? A_SP : A_SP1;  // H to SP+1 first
-      if (is_calls) seq_asel = mc_le2 ? A_PC : A_SP;
+      if (is_out | is_in) seq_asel = (mc == 3'd1) ? A_PC : A_ZZ;
+      if (is_xthl) seq_asel = (mc == 3'd1 || mc == 3'd4) ? A_SP : A_SP1;  // H to SP+1 first
+      if (is_ccc | is_call) seq_asel = (mc <= 3'd2) ? A_PC : A_SP;
     end
-  end
+  endfunction
 
-  // Write data.
-  always @* begin
-    seq_dout = reg_a;
-    if (mc_q != 3'd0) begin
-      if (is_mov_mr) seq_dout = rf[sss];
-      if (is_mem_rmw) seq_dout = z_q;
-      if (is_direct) seq_dout = ir_q[4] ? reg_a : mc_3 ? rf[R_L] : rf[R_H];
-      if (is_xthl) seq_dout = mc_3 ? rf[R_H] : rf[R_L];
-      if (is_calls) seq_dout = mc_3 ? pc_q[15:8] : pc_q[7:0];
-      if (is_rst) seq_dout = mc_1 ? pc_q[15:8] : pc_q[7:0];
-      if (is_push) seq_dout = mc_1 ? push_hi : push_lo;
+  // Cycle type. An INTR acknowledge reads its operand bytes by INTA cycles.
+  function [2:0] seq_cyc;
+    input [2:0] mc;
+    reg at_1, at_le2;
+    begin
+      at_1 = (mc == 3'd1);
+      at_le2 = (mc <= 3'd2);
+      seq_cyc = CY_MR;
+      if (is_hlt) seq_cyc = CY_HLT;  // its fifth T-state
+      if (is_mov_mr | is_stax | is_push | is_rst) seq_cyc = CY_MW;
+      if (is_mem_rmw) seq_cyc = at_1 ? CY_MR : CY_MW;
+      if (is_dad) seq_cyc = CY_BI;  // two bus idle cycles
+      if (is_direct) seq_cyc = (at_le2 || ir_q[3]) ? CY_MR : CY_MW;
+      if (is_out | is_in) seq_cyc = at_1 ? CY_MR : (is_in ? CY_IOR : CY_IOW);
+      if (is_xthl | (is_ccc | is_call)) seq_cyc = at_le2 ? CY_MR : CY_MW;
+      if (intr_mode && seq_cyc == CY_MR && seq_asel(mc) == A_PC) seq_cyc = CY_INA;
     end
-  end
+  endfunction
 
-  // Last cycle of the unit. Rcc ends after its opcode fetch when the
-  // condition fails, Jcc / Ccc after their first operand byte.
-  always @* begin
-    seq_last = 1'b1;
-    if (mc_q == 3'd0) begin
-      case (kind)
-        K_IACK: seq_last = 1'b0;
-        K_IDLE: seq_last = 1'b1;
-        default: seq_last = of_only | (is_rcc & ~cond);
-      endcase
-    end else begin
-      if (is_mem_rmw | is_lxi | is_dad | is_pop_ret | is_jmp | is_io) seq_last = mc_2;
-      if (is_push | is_rst) seq_last = mc_2;
-      if (is_jcc) seq_last = mc_2 || !cond;
-      if (is_direct) seq_last = ir_q[4] ? mc_3 : mc_4;
-      if (is_xthl) seq_last = mc_4;
-      if (is_calls) seq_last = mc_4 || (mc_1 && is_ccc && !cond);
+  // Write data source.
+  function [3:0] seq_dsel;
+    input [2:0] mc;
+    begin
+      seq_dsel = D_A;
+      if (is_mov_mr) seq_dsel = D_SSS;
+      if (is_mem_rmw) seq_dsel = D_Z;
+      if (is_direct) seq_dsel = ir_q[4] ? D_A : (mc == 3'd3) ? D_L : D_H;
+      if (is_xthl) seq_dsel = (mc == 3'd3) ? D_H : D_L;
+      if (is_ccc | is_call) seq_dsel = (mc == 3'd3) ? D_PCH : D_PCL;
+      if (is_rst) seq_dsel = (mc == 3'd1) ? D_PCH : D_PCL;
+      if (is_push) seq_dsel = (mc == 3'd1) ? D_PUSH_HI : D_PUSH_LO;
     end
-  end
+  endfunction
 
-  // Cycle length and ends.
-  reg [2:0] cyc_len;
-  always @* begin
-    if (mc_q == 3'd0) begin
-      case (kind)
-        K_IACK: cyc_len = 3'd6;
-        K_IDLE: cyc_len = 3'd1;
-        default: cyc_len = of6 ? 3'd6 : 3'd4;
-      endcase
-    end else begin
-      cyc_len = (seq_cyc == CY_HLT) ? 3'd1 : 3'd3;
+  // Last cycle of the unit: Jcc / Ccc end after their first operand byte
+  // when the condition fails.
+  function seq_last;
+    input [2:0] mc;
+    reg at_1, at_2, at_3, at_4;
+    begin
+      {at_1, at_2, at_3, at_4} = {mc == 3'd1, mc == 3'd2, mc == 3'd3, mc == 3'd4};
+      seq_last = 1'b1;
+      if (is_mem_rmw | is_lxi | is_dad | is_pop_ret | is_jmp | (is_out | is_in)) seq_last = at_2;
+      if (is_push | is_rst) seq_last = at_2;
+      if (is_jcc) seq_last = at_2 || !cond_ir(ddd);
+      if (is_direct) seq_last = ir_q[4] ? at_3 : at_4;
+      if (is_xthl) seq_last = at_4;
+      if (is_ccc | is_call) seq_last = at_4 || (at_1 && is_ccc && !cond_ir(ddd));
     end
-  end
-  // The opcode is known from T4 on; before that no fetch can end.
-  wire of_early = (mc_q == 3'd0) && (kind == K_INSTR || kind == K_INTR) && (t_q < 3'd4);
-  // At a unit's first T-state only an idle unit ends (and does no work).
-  wire cyc_end_later = !unit_t1 && !of_early && (t_q == cyc_len);
-  wire cyc_end = unit_t1 ? (kind_now == K_IDLE) : cyc_end_later;
-  wire unit_end = unit_t1 ? (kind_now == K_IDLE) : (cyc_end_later && seq_last);
+  endfunction
+
+  // The opcode fetch's length and whether the unit ends with it (Rcc when
+  // its condition fails), for opcode op.
+  function [3:0] of_end;  // {length, last}
+    input [7:0] op;
+    reg of6, of_only, rcc;
+    begin
+      {of6, of_only, rcc} = decode_of(op);
+      of_end = {of6 ? 3'd6 : 3'd4, of_only | (rcc & ~cond_ir(op[5:3]))};
+    end
+  endfunction
+
+  // The current cycle, registered when it starts: type, address and write
+  // data sources, length in T-states, last of the unit.
+  reg [2:0] cyc_q, asel_q, len_q;
+  reg [3:0] dsel_q;
+  reg       last_q;
+  // A cycle ends at its last T-state; at a unit's first T-state only an
+  // idle unit ends (the sequencer does that itself, and no work is done).
+  wire cyc_end_later = !unit_t1 && (t_q == len_q);
   // The instruction's work is done at the end of its cycles: of the opcode
   // fetch (end_of) or of a later cycle (end_mc).
   wire end_work = cyc_end_later && (kind != K_IDLE);
@@ -332,103 +307,165 @@ module cpu8085 (
   // The opcode arrives at the end of T3 of the opcode fetch / INTA.
   wire op_load = (mc_q == 3'd0) && (t_q == 3'd3) && (kind == K_INSTR || kind == K_INTR);
 
-  // Bus outputs.
-  always @* begin
-    case (seq_asel)
-      A_HL: o_addr = hl;
-      A_BC: o_addr = bc;
-      A_DE: o_addr = de;
-      A_WZ: o_addr = wz;
-      A_SP: o_addr = sp_q;
-      A_SP1: o_addr = sp_q + 16'd1;
-      A_ZZ: o_addr = {z_q, z_q};
-      default: o_addr = pc_q;
-    endcase
-    o_dout = seq_dout;
-  end
-  wire is_t2 = (t_q == 3'd2);
-  assign o_rd = is_t2 && (seq_cyc == CY_OF || seq_cyc == CY_MR || seq_cyc == CY_IOR);
-  assign o_wr = is_t2 && (seq_cyc == CY_MW || seq_cyc == CY_IOW);
-  assign o_io = (seq_cyc == CY_IOR || seq_cyc == CY_IOW);
-  assign o_inta = is_t2 && (seq_cyc == CY_INA);
-  // At a unit's first T-state the cycle type follows the decision.
-  reg [2:0] t1_cyc;
-  always @* begin
-    case (kind_now)
-      K_IACK: t1_cyc = CY_BI;
-      K_IDLE: t1_cyc = CY_HLT;
-      K_INTR: t1_cyc = CY_INA;
-      default: t1_cyc = CY_OF;
-    endcase
-  end
-  assign o_cycle = unit_t1 ? t1_cyc : seq_cyc;
+  // Bus outputs: the address and write data, registered by the sequencer
+  // at the end of a cycle's first T-state from its sources (valid from T2,
+  // the strobes' T-state, to the cycle's end).
+  function [15:0] addr_of;
+    input [2:0] asel;
+    begin
+      case (asel)
+        A_HL: addr_of = {rf[R_H], rf[R_L]};
+        A_BC: addr_of = {rf[R_B], rf[R_C]};
+        A_DE: addr_of = {rf[R_D], rf[R_E]};
+        A_WZ: addr_of = {w_q, z_q};
+        A_SP: addr_of = sp_q;
+        A_SP1: addr_of = sp_q + 16'd1;
+        A_ZZ: addr_of = {z_q, z_q};
+        default: addr_of = pc_q;
+      endcase
+    end
+  endfunction
+  function [7:0] dout_of;
+    input [3:0] dsel;
+    begin
+      case (dsel)
+        D_SSS: dout_of = rf[sss];
+        D_Z: dout_of = z_q;
+        D_L: dout_of = rf[R_L];
+        D_H: dout_of = rf[R_H];
+        D_PCH: dout_of = pc_q[15:8];
+        D_PCL: dout_of = pc_q[7:0];
+        D_PUSH_HI: dout_of = (rp == 2'd3) ? reg_a : rf[{rp, 1'b0}];
+        D_PUSH_LO: dout_of = (rp == 2'd3) ? reg_f : rf[{rp, 1'b1}];
+        default: dout_of = reg_a;
+      endcase
+    end
+  endfunction
+  reg rd_q, wr_q, io_q, inta_q;
+  assign o_rd = rd_q;
+  assign o_wr = wr_q;
+  assign o_io = io_q;
+  assign o_inta = inta_q;
+  // During a unit's first T-state the unit's kind is not decided yet (the
+  // pins decide it at the end of that T-state): o_cycle shows CY_OF then
+  // (CY_HLT while halted), its own type from the second T-state on.
+  assign o_cycle = cyc_q;
   assign o_tstate = t_q;
 
   // ----------------------------------------------------------------- ALU
-  reg  [4:0] alu_op;
-  reg  [7:0] alu_b;
-  wire [7:0] alu_res, alu_f;
-  always @* begin
-    alu_op = {2'b00, ddd};
-    alu_b  = (sss == 3'd6) ? i_din : rf[sss];
-    if (ir_q[7:6] == 2'b00) begin
-      alu_b = (ddd == 3'd6) ? i_din : rf[ddd];
-      case (sss)
-        3'b100:  alu_op = 5'd8;  // INR
-        3'b101:  alu_op = 5'd9;  // DCR
-        default: alu_op = 5'd10 + {2'b00, ddd};  // RLC RRC RAL RAR DAA CMA STC CMC
-      endcase
+  // The ALU operation of instruction ir on operand b (its register or the
+  // byte read), A = a, F = f: {result, F}. ALU group (00..3F excluded): the
+  // operation is bits 5:3; 00 DDD 10x INR / DCR; 00 DDD 111 the
+  // accumulator group.
+  function [15:0] alu_ir;
+    input [7:0] ir;
+    input [7:0] b;
+    input [7:0] a;
+    input [7:0] f;
+    reg   [4:0] op;
+    begin
+      op = {2'b00, ir[5:3]};
+      if (ir[7:6] == 2'b00) begin
+        case (ir[2:0])
+          3'b100:  op = ALU_INR;
+          3'b101:  op = ALU_DCR;
+          default: op = ALU_RLC + {2'b00, ir[5:3]};  // RLC RRC RAL RAR DAA CMA STC CMC
+        endcase
+      end
+      alu_ir = alu_exec(op, a, b, f);
     end
-  end
-  cpu8085_alu u_alu (
-      .i_op (alu_op),
-      .i_a  (reg_a),
-      .i_b  (alu_b),
-      .i_f  (reg_f),
-      .o_res(alu_res),
-      .o_f  (alu_f)
-  );
-
-  wire [16:0] dad_sum = {1'b0, hl} + {1'b0, rp_val};
-  wire [15:0] rp_inc = rp_val + 16'd1;
-  wire [15:0] rp_dec = rp_val - 16'd1;
-  wire [ 7:0] rim_val = {i_sid, r75_lat, i_rst65, i_rst55,
-                         rim_after_trap_q ? ie_before_trap_q : ie_q, masks_q};
+  endfunction
 
   // ------------------------------------------------------------ registers
   // Each register (or small group) below has its own block; updates happen
   // at the end of the T-state named in the comments. Priority in each:
   // reset, then a debug load, then running.
 
-  // Sequencer: T-state in the cycle and cycle index in the unit; the retire
-  // strobe is the first T-state of the next unit.
-  always @(posedge i_clk) begin
+  // Sequencer: T-state in the cycle and cycle index in the unit, the
+  // registered description of the current cycle and the bus strobes (T2
+  // of a cycle that reads, writes or acknowledges); the retire strobe is
+  // the first T-state of the next unit. At a unit's first T-state the pins
+  // decide what the unit is: an idle unit ends there, anything else starts
+  // its first cycle; its opcode (end of T3) gives the fetch's length.
+  always @(posedge i_clk) begin : sequencer
+    reg [1:0] k;
+    reg [2:0] c, mc;
     if (i_rst) begin
       t_q <= 3'd1;
       mc_q <= 3'd0;
+      unit_t1 <= 1'b1;
       o_retire <= 1'b0;
+      {cyc_q, asel_q, dsel_q, len_q, last_q} <= {CY_OF, A_PC, D_A, 3'd4, 1'b1};
+      {rd_q, wr_q, io_q, inta_q} <= 4'b0000;
+      o_addr <= 16'h0000;
+      o_dout <= 8'h00;
     end else if (!i_dbg_load) begin
-      o_retire <= unit_end;
-      if (cyc_end) t_q <= 3'd1;
-      else t_q <= t_q + 3'd1;
-      if (unit_end) mc_q <= 3'd0;
-      else if (cyc_end) mc_q <= mc_q + 3'd1;
+      {rd_q, wr_q, inta_q} <= 3'b000;
+      o_retire <= 1'b0;
+      if (unit_t1) begin
+        k = kind_of(irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr));
+        if (k == K_IDLE) begin
+          o_retire <= 1'b1;
+          cyc_q <= CY_HLT;
+        end else begin
+          unit_t1 <= 1'b0;
+          t_q <= 3'd2;
+          c = (k == K_IACK) ? CY_BI : (k == K_INTR) ? CY_INA : CY_OF;
+          {cyc_q, asel_q, dsel_q, io_q} <= {c, A_PC, D_A, 1'b0};
+          // Until the opcode is read, an instruction's fetch is 4 T long.
+          {len_q, last_q} <= (k == K_IACK) ? {3'd6, 1'b0} : {3'd4, 1'b1};
+          rd_q <= (c == CY_OF);
+          inta_q <= (c == CY_INA);
+          o_addr <= pc_q;
+        end
+      end else if (cyc_end_later) begin
+        t_q <= 3'd1;
+        if (last_q) begin
+          // The unit ends: the next one starts as an opcode fetch, or as
+          // an idle T-state while halted, until its first T-state decides.
+          mc_q <= 3'd0;
+          unit_t1 <= 1'b1;
+          o_retire <= 1'b1;
+          cyc_q <= (halted_q || (is_hlt && mc_q == 3'd1)) ? CY_HLT : CY_OF;
+          {asel_q, dsel_q, io_q} <= {A_PC, D_A, 1'b0};
+        end else begin
+          mc = mc_q + 3'd1;
+          mc_q <= mc;
+          c = seq_cyc(mc);
+          {cyc_q, asel_q, dsel_q, last_q} <= {c, seq_asel(mc), seq_dsel(mc), seq_last(mc)};
+          len_q <= (c == CY_HLT) ? 3'd1 : 3'd3;
+          io_q <= (c == CY_IOR || c == CY_IOW);
+          // A 1-T cycle (HLT's fifth T-state) has no T2.
+        end
+      end else begin
+        t_q <= t_q + 3'd1;
+        if (op_load) {len_q, last_q} <= of_end(i_din);
+        if (t_q == 3'd1) begin
+          o_addr <= addr_of(asel_q);
+          o_dout <= dout_of(dsel_q);
+          rd_q <= (cyc_q == CY_MR || cyc_q == CY_IOR);
+          wr_q <= (cyc_q == CY_MW || cyc_q == CY_IOW);
+          inta_q <= (cyc_q == CY_INA);
+        end
+      end
     end
   end
 
   // What the unit is, decided at its first T-state: kind, interrupt, PC at
   // its start, and the vector of a TRAP / RST x.5 acknowledge.
-  always @(posedge i_clk) begin
+  always @(posedge i_clk) begin : unit_kind
+    reg [2:0] irq;
     if (i_rst) begin
       kind_q <= K_INSTR;
       irq_q <= IRQ_NONE;
       ipc_q <= 16'h0000;
       vec_q <= 16'h0000;
     end else if (!i_dbg_load && unit_t1) begin
-      kind_q <= kind_now;
-      irq_q <= irq_now;
+      irq = irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr);
+      kind_q <= kind_of(irq);
+      irq_q <= irq;
       ipc_q <= pc_q;
-      case (irq_now)
+      case (irq)
         IRQ_TRAP: vec_q <= 16'h0024;
         IRQ_75: vec_q <= 16'h003C;
         IRQ_65: vec_q <= 16'h0034;
@@ -439,7 +476,8 @@ module cpu8085 (
 
   // TRAP and RST 7.5 edge latches: set by a rising edge at any time,
   // cleared by their acknowledge (and RST 7.5's by SIM with R7.5).
-  always @(posedge i_clk) begin
+  always @(posedge i_clk) begin : edge_latches
+    reg [2:0] irq;
     if (i_rst) begin
       trap_prev_q <= 1'b0;
       r75_prev_q <= 1'b0;
@@ -448,41 +486,47 @@ module cpu8085 (
     end else if (!i_dbg_load) begin
       trap_prev_q <= i_trap;
       r75_prev_q <= i_rst75;
-      trap_latch_q <= trap_lat && !(unit_t1 && irq_now == IRQ_TRAP);
-      r75_latch_q <= r75_lat && !(unit_t1 && irq_now == IRQ_75) &&
-                     !(end_of && is_sim && reg_a[4]);
+      trap_latch_q <= trap_latch_q | (i_trap & ~trap_prev_q);
+      r75_latch_q <= r75_latch_q | (i_rst75 & ~r75_prev_q);
+      if (unit_t1) begin
+        irq = irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr);
+        if (irq == IRQ_TRAP) trap_latch_q <= 1'b0;
+        if (irq == IRQ_75) r75_latch_q <= 1'b0;
+      end
+      if (end_of && is_sim && reg_a[4]) r75_latch_q <= 1'b0;
     end
   end
 
   // Interrupt enable and the EI shadow: an acknowledge clears IE, DI and EI
   // set it at the end of their opcode fetch; the shadow lasts one unit.
-  always @(posedge i_clk) begin
+  // Halted: set by HLT's fifth T-state, cleared by an acknowledge. RIM's IE
+  // bit after a TRAP: IE as it was before the TRAP, until the first RIM.
+  always @(posedge i_clk) begin : interrupt_state
+    reg [2:0] irq;
     if (i_rst) begin
       ie_q <= 1'b0;
       ei_delay_q <= 1'b0;
+      halted_q <= 1'b0;
+      rim_after_trap_q <= 1'b0;
+      ie_before_trap_q <= 1'b0;
     end else if (!i_dbg_load) begin
       if (unit_t1) begin
+        irq = irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr);
         ei_delay_q <= 1'b0;
-        if (kind_now == K_IACK || kind_now == K_INTR) ie_q <= 1'b0;
+        if (irq != IRQ_NONE) begin
+          ie_q <= 1'b0;
+          halted_q <= 1'b0;
+        end
+        if (irq == IRQ_TRAP) begin
+          ie_before_trap_q <= ie_q;
+          rim_after_trap_q <= 1'b1;
+        end
       end
       if (end_of && (is_di || is_ei)) begin
         ie_q <= is_ei;
         ei_delay_q <= is_ei;
       end
-    end
-  end
-
-  // RIM's IE bit after a TRAP: IE as it was before the TRAP, until the
-  // first RIM.
-  always @(posedge i_clk) begin
-    if (i_rst) begin
-      rim_after_trap_q <= 1'b0;
-      ie_before_trap_q <= 1'b0;
-    end else if (!i_dbg_load) begin
-      if (unit_t1 && irq_now == IRQ_TRAP) begin
-        ie_before_trap_q <= ie_q;
-        rim_after_trap_q <= 1'b1;
-      end
+      if (end_mc && is_hlt) halted_q <= 1'b1;
       if (end_of && is_rim) rim_after_trap_q <= 1'b0;
     end
   end
@@ -498,38 +542,43 @@ module cpu8085 (
     end
   end
 
-  // Halted: set by HLT's fifth T-state, cleared by an acknowledge.
-  always @(posedge i_clk) begin
-    if (i_rst) halted_q <= 1'b0;
-    else if (!i_dbg_load) begin
-      if (unit_t1 && (kind_now == K_IACK || kind_now == K_INTR)) halted_q <= 1'b0;
-      if (end_mc && is_hlt) halted_q <= 1'b1;
-    end
-  end
-
-  // Instruction register: the opcode at the end of T3 of the fetch / INTA;
-  // a TRAP / RST x.5 acknowledge runs as RST 7 (FF).
-  always @(posedge i_clk) begin
-    if (i_rst) ir_q <= 8'h00;
-    else if (!i_dbg_load) begin
-      if (unit_t1 && kind_now == K_IACK) ir_q <= 8'hFF;
-      if (op_load) ir_q <= i_din;
-    end
-  end
-
-  // Temporary pair W Z: operand bytes (Z first), INR M / DCR M's result,
-  // SHLD / LHLD's address + 1.
-  always @(posedge i_clk) begin
+  // Instruction register and its decoded classes: the opcode at the end of
+  // T3 of the fetch / INTA; a TRAP / RST x.5 acknowledge runs as RST 7 (FF).
+  always @(posedge i_clk) begin : instruction
+    reg [2:0] irq;
     if (i_rst) begin
-      w_q <= 8'h00;
-      z_q <= 8'h00;
-    end else if (!i_dbg_load && end_mc) begin
-      if (mc_1 && (is_mvi_m | is_lxi | is_direct | is_pop_ret | is_jcc | is_jmp |
-                   is_io | is_xthl | is_calls))
-        z_q <= i_din;
-      if (mc_1 && is_incdec_m) z_q <= alu_res;
-      if (mc_2 && (is_direct | is_xthl | is_calls)) w_q <= i_din;
-      if (mc_3 && is_direct && !ir_q[4]) {w_q, z_q} <= wz + 16'd1;
+      ir_q <= 8'h00;
+      {is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i,
+       is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc,
+       is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct,
+       is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp,
+       is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
+       is_ccc, is_call, is_push, is_rst,
+       is_mem_rmw, is_pop_ret} <= decode(8'h00);
+    end else if (!i_dbg_load) begin
+      if (unit_t1) begin
+        irq = irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr);
+        if (irq != IRQ_NONE && irq != IRQ_INTR) begin
+          ir_q <= 8'hFF;
+          {is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i,
+           is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc,
+           is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct,
+           is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp,
+           is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
+           is_ccc, is_call, is_push, is_rst,
+       is_mem_rmw, is_pop_ret} <= decode(8'hFF);
+        end
+      end
+      if (op_load) begin
+        ir_q <= i_din;
+        {is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i,
+         is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc,
+         is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct,
+         is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp,
+         is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
+         is_ccc, is_call, is_push, is_rst,
+       is_mem_rmw, is_pop_ret} <= decode(i_din);
+      end
     end
   end
 
@@ -543,10 +592,10 @@ module cpu8085 (
       if (op_load && kind == K_INSTR) pc_q <= pc_q + 16'd1;
       if (end_of && is_pchl) pc_q <= hl;
       if (end_mc) begin
-        if (seq_cyc == CY_MR && seq_asel == A_PC) pc_q <= pc_q + 16'd1;
-        if (mc_1 && (is_jcc | is_ccc) && !cond && !intr_mode) pc_q <= pc_q + 16'd2;
+        if (cyc_q == CY_MR && asel_q == A_PC) pc_q <= pc_q + 16'd1;
+        if (mc_1 && (is_jcc | is_ccc) && !cond_ir(ddd) && !intr_mode) pc_q <= pc_q + 16'd2;
         if (mc_2 && (is_jcc | is_jmp | is_rcc | is_ret)) pc_q <= {i_din, z_q};
-        if (mc_4 && is_calls) pc_q <= wz;
+        if (mc_4 && (is_ccc | is_call)) pc_q <= wz;
         if (mc_2 && is_rst) pc_q <= (kind == K_IACK) ? vec_q : {10'b0, ddd, 3'b000};
       end
     end
@@ -560,84 +609,90 @@ module cpu8085 (
     else begin
       if (end_of && (is_push | is_rst)) sp_q <= sp_q - 16'd1;
       if (end_of && is_sphl) sp_q <= hl;
-      if (end_of && is_inx && rp == 2'd3) sp_q <= rp_inc;
-      if (end_of && is_dcx && rp == 2'd3) sp_q <= rp_dec;
+      if (end_of && is_inx && rp == 2'd3) sp_q <= sp_q + 16'd1;
+      if (end_of && is_dcx && rp == 2'd3) sp_q <= sp_q - 16'd1;
       if (end_mc) begin
         if (mc_2 && is_lxi && rp == 2'd3) sp_q <= {i_din, z_q};
         if (is_pop_ret) sp_q <= sp_q + 16'd1;
-        if ((mc_2 || mc_3) && is_calls) sp_q <= sp_q - 16'd1;
+        if ((mc_2 || mc_3) && (is_ccc | is_call)) sp_q <= sp_q - 16'd1;
         if (mc_1 && (is_push | is_rst)) sp_q <= sp_q - 16'd1;
       end
     end
   end
 
-  // Register file write ports, decoded from the class: one register
-  // (rf_we), one pair B / D / H (pair_we), the flags (f_we), and XCHG's
-  // swap of DE and HL.
-  reg        rf_we, pair_we, f_we;
-  reg [ 2:0] rf_wa;
-  reg [ 7:0] rf_wd, f_wd;
-  reg [ 1:0] pair_wa;
-  reg [15:0] pair_wd;
-
-  // One register: MOV, MVI, INR r / DCR r, accumulator results, loads.
-  always @* begin
-    rf_we = 1'b0;
-    rf_wa = R_A;
-    rf_wd = alu_res;
-    if (end_of) begin
-      if (is_mov_rr) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, rf[sss]};
-      if (is_alu_r) rf_we = (ddd != 3'd7);  // CMP writes only F
-      if (is_incdec_r) {rf_we, rf_wa} = {1'b1, ddd};
-      if (is_acc) rf_we = 1'b1;
-      if (is_rim) {rf_we, rf_wd} = {1'b1, rim_val};
-    end
-    if (end_mc) begin
-      if (is_mov_rm || is_mvi_r) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, i_din};
-      if (is_alu_m || is_alu_i) rf_we = (ddd != 3'd7);
-      if (is_ldax || (is_in && mc_2)) {rf_we, rf_wd} = {1'b1, i_din};
-      if (is_direct && mc_3 && ir_q[3]) {rf_we, rf_wa, rf_wd} = {1'b1, ir_q[4] ? R_A : R_L, i_din};
-      if (is_direct && mc_4 && ir_q[3]) {rf_we, rf_wa, rf_wd} = {1'b1, R_H, i_din};
-      if (is_pop && mc_2 && rp == 2'd3) {rf_we, rf_wd} = {1'b1, i_din};
-    end
-  end
-
-  // One pair: LXI, INX, DCX, DAD, POP (not PSW), XTHL.
-  always @* begin
-    pair_we = 1'b0;
-    pair_wa = rp;
-    pair_wd = {i_din, z_q};
-    if (end_of && rp != 2'd3) begin
-      if (is_inx) {pair_we, pair_wd} = {1'b1, rp_inc};
-      if (is_dcx) {pair_we, pair_wd} = {1'b1, rp_dec};
-    end
-    if (end_mc && mc_2 && rp != 2'd3 && (is_lxi || is_pop)) pair_we = 1'b1;
-    if (end_mc && mc_2 && is_dad) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, dad_sum[15:0]};
-    if (end_mc && mc_4 && is_xthl) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, wz};
-  end
-
-  // The flags: ALU results, DAD's carry, POP PSW.
-  always @* begin
-    f_we = 1'b0;
-    f_wd = alu_f;
-    if (end_of && (is_alu_r | is_incdec_r | is_acc)) f_we = 1'b1;
-    if (end_mc) begin
-      if (is_alu_m | is_alu_i | (is_incdec_m & mc_1)) f_we = 1'b1;
-      if (is_dad && mc_2) {f_we, f_wd} = {1'b1, reg_f[7:1], dad_sum[16]};
-      if (is_pop && mc_2 && rp == 2'd3) {f_we, f_wd} = {1'b1, z_q & 8'hD5};
-    end
-  end
-
-  // Register file B C D E H L F A.
+  // Register file B C D E H L F A. Written at the end of the cycle that
+  // produces a result (end_work), through three ports decoded from the
+  // class: one register (rf_we: MOV, MVI, INR r / DCR r, accumulator
+  // results, loads), one pair B / D / H (pair_we: LXI, INX, DCX, DAD, POP
+  // but PSW, XTHL), the flags (f_we: ALU results, DAD's carry, POP PSW),
+  // and XCHG's swap of DE and HL; the temporary pair W Z (operand bytes, Z
+  // first; INR M / DCR M's result; SHLD / LHLD's address + 1). The ports
+  // and the ALU are computed inside
+  // this block, only when a cycle ends (a Verilated model then evaluates
+  // them in one T-state of three to six, not at every clock).
   integer k;
-  always @(posedge i_clk) begin
+  always @(posedge i_clk) begin : regfile
+    reg        rf_we, pair_we, f_we;
+    reg [ 2:0] rf_wa;
+    reg [ 7:0] rf_wd, f_wd;
+    reg [ 1:0] pair_wa;
+    reg [15:0] pair_wd, pair_v, alu_v;
+    reg [16:0] dad_sum;
+    reg [ 2:0] alu_src;
     if (i_rst) begin
       for (k = 0; k < 8; k = k + 1) rf[k] <= 8'h00;
+      w_q <= 8'h00;
+      z_q <= 8'h00;
     end else if (i_dbg_load) begin
       {rf[R_A], rf[R_F], rf[R_B], rf[R_C], rf[R_D], rf[R_E], rf[R_H], rf[R_L]} <= i_dbg_regs;
-    end else begin
+    end else if (end_work) begin
+      // The ALU's register operand: DDD for INR / DCR, SSS otherwise (6:
+      // M, the byte read).
+      alu_src = (ir_q[7:6] == 2'b00) ? ddd : sss;
+      alu_v = alu_ir(ir_q, (alu_src == 3'd6) ? i_din : rf[alu_src], reg_a, reg_f);
+      pair_v = (rp == 2'd0) ? bc : (rp == 2'd1) ? de : hl;  // rp 3 (SP): not here
+      dad_sum = {1'b0, hl} + {1'b0, (rp == 2'd3) ? sp_q : pair_v};
+      {rf_we, rf_wa, rf_wd} = {1'b0, R_A, alu_v[15:8]};
+      {pair_we, pair_wa, pair_wd} = {1'b0, rp, i_din, z_q};
+      {f_we, f_wd} = {1'b0, alu_v[7:0]};
+      if (end_of) begin
+        if (is_mov_rr) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, rf[sss]};
+        if (is_alu_r) rf_we = (ddd != 3'd7);  // CMP writes only F
+        if (is_incdec_r) {rf_we, rf_wa} = {1'b1, ddd};
+        if (is_acc) rf_we = 1'b1;
+        if (is_rim)
+          {rf_we, rf_wd} = {1'b1, i_sid, r75_latch_q | (i_rst75 & ~r75_prev_q), i_rst65, i_rst55,
+                            rim_after_trap_q ? ie_before_trap_q : ie_q, masks_q};
+        if (is_inx && rp != 2'd3) {pair_we, pair_wd} = {1'b1, pair_v + 16'd1};
+        if (is_dcx && rp != 2'd3) {pair_we, pair_wd} = {1'b1, pair_v - 16'd1};
+        if (is_alu_r | is_incdec_r | is_acc) f_we = 1'b1;
+      end else begin
+        if (is_mov_rm || is_mvi_r) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, i_din};
+        if (is_alu_m || is_alu_i) rf_we = (ddd != 3'd7);
+        if (is_ldax || (is_in && mc_2)) {rf_we, rf_wd} = {1'b1, i_din};
+        if (is_direct && mc_3 && ir_q[3]) {rf_we, rf_wa, rf_wd} = {1'b1, ir_q[4] ? R_A : R_L, i_din};
+        if (is_direct && mc_4 && ir_q[3]) {rf_we, rf_wa, rf_wd} = {1'b1, R_H, i_din};
+        if (is_pop && mc_2 && rp == 2'd3) {rf_we, rf_wd} = {1'b1, i_din};
+        if (mc_2 && rp != 2'd3 && (is_lxi || is_pop)) pair_we = 1'b1;
+        if (mc_2 && is_dad) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, dad_sum[15:0]};
+        if (mc_4 && is_xthl) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, wz};
+        if (is_alu_m | is_alu_i | (is_incdec_m & mc_1)) f_we = 1'b1;
+        if (is_dad && mc_2) {f_we, f_wd} = {1'b1, reg_f[7:1], dad_sum[16]};
+        if (is_pop && mc_2 && rp == 2'd3) {f_we, f_wd} = {1'b1, z_q & 8'hD5};
+        if (mc_1 && (is_mvi_m | is_lxi | is_direct | is_pop_ret | is_jcc | is_jmp |
+                     (is_out | is_in) | is_xthl | (is_ccc | is_call)))
+          z_q <= i_din;
+        if (mc_1 && is_incdec_m) z_q <= alu_v[15:8];
+        if (mc_2 && (is_direct | is_xthl | (is_ccc | is_call))) w_q <= i_din;
+        if (mc_3 && is_direct && !ir_q[4]) {w_q, z_q} <= wz + 16'd1;
+      end
+`ifdef FORMAL
+      // The byte and pair write ports never address F (index 6, pair 3).
+      assert (!rf_we || rf_wa != R_F);
+      assert (!pair_we || pair_wa != 2'd3);
+`endif
       // F is written by its own port only: the byte and pair ports never
-      // address it (asserted below), the guards tell synthesis so.
+      // address it (asserted above), the guards tell synthesis so.
       if (rf_we && rf_wa != R_F) rf[rf_wa] <= rf_wd;
       if (pair_we && pair_wa != 2'd3) begin
         rf[{pair_wa, 1'b0}] <= pair_wd[15:8];
@@ -664,14 +719,35 @@ module cpu8085 (
     if (!f_past_valid) assume (i_rst);
     if (i_dbg_load) assume (unit_t1);
   end
+  // The registered classes.
+  wire [39:0] classes = {
+    is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i,
+    is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc,
+    is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct,
+    is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp,
+    is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
+    is_ccc, is_call, is_push, is_rst,
+    is_mem_rmw, is_pop_ret};
+  // The 39 classes of decode_all (NOP included) are one-hot.
+  function f_onehot;
+    input [42:0] all;
+    begin
+      f_onehot = (all[42:4] != 39'd0) && ((all[42:4] & (all[42:4] - 39'd1)) == 39'd0);
+    end
+  endfunction
   // A clock in which the CPU runs (neither reset nor a debug load).
   wire f_run = f_past_valid && !i_rst && !i_dbg_load;
 
+  // The unit ends with this T-state.
+  wire f_unit_end = unit_t1 ? (kind_of(irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr)) == K_IDLE)
+                            : (cyc_end_later && last_q);
+  // unit_t1 is the first T-state of a unit.
+  always @* if (f_past_valid) assert (unit_t1 == (mc_q == 3'd0 && t_q == 3'd1));
   // T-states of the current unit before this one.
   reg [4:0] f_t_q;
   always @(posedge i_clk) begin
     if (i_rst) f_t_q <= 5'd0;
-    else if (!i_dbg_load) f_t_q <= unit_end ? 5'd0 : f_t_q + 5'd1;
+    else if (!i_dbg_load) f_t_q <= f_unit_end ? 5'd0 : f_t_q + 5'd1;
   end
 
   // The data sheet's T-states of the instruction in ir_q (its condition as
@@ -689,13 +765,16 @@ module cpu8085 (
     if (is_direct) f_t_expect = ir_q[4] ? 5'd13 : 5'd16;  // STA LDA / SHLD LHLD
     if (is_xthl) f_t_expect = 5'd16;
     if (is_call) f_t_expect = 5'd18;
-    if (is_rcc) f_t_expect = cond ? 5'd12 : 5'd6;
-    if (is_jcc) f_t_expect = cond ? 5'd10 : 5'd7;
-    if (is_ccc) f_t_expect = cond ? 5'd18 : 5'd9;
+    if (is_rcc) f_t_expect = cond_ir(ddd) ? 5'd12 : 5'd6;
+    if (is_jcc) f_t_expect = cond_ir(ddd) ? 5'd10 : 5'd7;
+    if (is_ccc) f_t_expect = cond_ir(ddd) ? 5'd18 : 5'd9;
   end
 
   always @* begin
     if (f_past_valid) begin
+      // The registered classes are the decode of ir_q, one-hot.
+      assert (classes == decode(ir_q));
+      assert (f_onehot(decode_all(ir_q)));
       // The sequencer stays in range: T1..T6 in an opcode fetch / BI6,
       // T1..T3 in later cycles, at most five cycles per unit.
       assert (t_q >= 3'd1 && t_q <= 3'd6);
@@ -704,16 +783,13 @@ module cpu8085 (
       assert (kind_q != K_IDLE || mc_q == 3'd0);
     end
     if (f_run) begin
-      // The byte and pair write ports never address F (index 6, pair 3).
-      assert (!rf_we || rf_wa != R_F);
-      assert (!pair_we || pair_wa != 2'd3);
       // At most one bus strobe.
       assert ({1'b0, o_rd} + {1'b0, o_wr} + {1'b0, o_inta} <= 2'd1);
       // A unit ends after the data sheet's number of T-states: an
       // instruction (also one supplied by INTA) by its class, a TRAP /
       // RST x.5 acknowledge 12, an idle unit 1.
-      if (unit_end && unit_t1) assert (f_t_q == 5'd0);
-      if (unit_end && !unit_t1) begin
+      if (f_unit_end && unit_t1) assert (f_t_q == 5'd0);
+      if (f_unit_end && !unit_t1) begin
         // begin/end: `assert (...); else` would bind the else to the
         // assert (its fail action) in SystemVerilog.
         if (kind_q == K_IACK) begin

@@ -8,6 +8,7 @@
 #include "Vboard8085___024root.h"
 #include "debug_ports.hpp"
 #include "harness.hpp"
+#include "one_eval_clock.hpp"
 #include "sw8085/interp/host.hpp"
 
 namespace board8085 {
@@ -18,7 +19,7 @@ constexpr std::uint16_t kRamBase = 0x2000, kRamSize = 0x800, kMailbox = 0x3000;
 
 class BoardMachine final : public i8085::Machine {
  public:
-  explicit BoardMachine(i8085::Bus& bus) : bus_(bus), h_("", "board") {
+  explicit BoardMachine(i8085::Bus& bus) : bus_(bus), h_("", "board"), clock_(h_, !contour::tb::fst_request("").empty()) {
     // The host's own bus (sw8085/interp): its mailbox bytes are compared
     // with one memcmp per step instead of 256 virtual reads.
     if (auto* board_bus = dynamic_cast<contour::sw8085::BoardBus*>(&bus)) host_mailbox_ = board_bus->mailbox().data();
@@ -50,9 +51,9 @@ class BoardMachine final : public i8085::Machine {
     s.t_before = t_;
     s.mode = i8085::Mode::i8085;
     do {
-      h_.clock_low();
+      clock_.low();
       forward_write();
-      h_.clock_high();
+      clock_.high();
       ++t_;
     } while (!top().o_retire);
     s.pc = top().o_dbg_ipc;
@@ -140,6 +141,7 @@ class BoardMachine final : public i8085::Machine {
 
   i8085::Bus& bus_;
   contour::tb::Harness<Vboard8085> h_;
+  cpu8085::OneEvalClock<Vboard8085> clock_;
   const std::uint8_t* host_mailbox_ = nullptr;  // the host's BoardBus mailbox, if it is one
   std::array<std::uint8_t, 256> shadow_{};
   std::uint64_t t_ = 0;

@@ -4,8 +4,10 @@
 #include <stdexcept>
 
 #include "Vcpu8085.h"
+#include "Vcpu8085___024root.h"
 #include "debug_ports.hpp"
 #include "harness.hpp"
+#include "one_eval_clock.hpp"
 
 namespace cpu8085 {
 
@@ -28,7 +30,10 @@ struct UnitBytes {
 
 class CpuMachine final : public i8085::Machine {
  public:
-  CpuMachine(i8085::Bus& bus, std::string fst_path) : bus_(bus), h_(std::move(fst_path), "cpu") { reset(); }
+  CpuMachine(i8085::Bus& bus, const std::string& fst_path)
+      : bus_(bus), h_(fst_path, "cpu"), clock_(h_, !contour::tb::fst_request(fst_path).empty()) {
+    reset();
+  }
 
   i8085::Mode mode() const override { return i8085::Mode::i8085; }
 
@@ -43,9 +48,9 @@ class CpuMachine final : public i8085::Machine {
     s.mode = i8085::Mode::i8085;
     UnitBytes u;
     do {
-      h_.clock_low();
+      clock_.low();
       serve_bus(u);
-      h_.clock_high();
+      clock_.high();
       ++t_;
     } while (!h_.top().o_retire);
     s.pc = h_.top().o_dbg_ipc;
@@ -144,6 +149,7 @@ class CpuMachine final : public i8085::Machine {
 
   i8085::Bus& bus_;
   contour::tb::Harness<Vcpu8085> h_;
+  OneEvalClock<Vcpu8085> clock_;
   std::uint64_t t_ = 0;
   i8085::Step last_{};
 };
@@ -153,7 +159,7 @@ class CpuMachine final : public i8085::Machine {
 std::unique_ptr<i8085::Machine> make_cpu_machine(i8085::Bus& bus, i8085::Mode mode, std::string fst_path) {
   if (mode != i8085::Mode::i8085)
     throw std::invalid_argument("the Verilog CPU (rtl/cpu8085) is an 8085 only: --cpu 8080 needs --engine iss");
-  return std::make_unique<CpuMachine>(bus, std::move(fst_path));
+  return std::make_unique<CpuMachine>(bus, fst_path);
 }
 
 }  // namespace cpu8085

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Formal proof of the 8085 CPU's `ifdef FORMAL properties (cpu8085.v,
-# cpu8085_decode.v; docs/cpu8085.md, "Formal"):
-#   - the decoder's classes are one-hot for every opcode (also proved on
-#     the decoder alone by yosys `sat`, all 256 opcodes),
+# cpu8085_decode.vh; docs/cpu8085.md, "Formal"):
+#   - the decoder's classes are one-hot for every opcode (proved on the
+#     decode function alone by yosys `sat`, all 256 opcodes; in the CPU,
+#     the registered classes are the decode of the instruction register),
 #   - the sequencer stays in range (T1..T6, at most 5 cycles, later cycles
 #     of 3 T at most, idle units one cycle),
 #   - at most one bus strobe (o_rd o_wr o_inta) at a time,
@@ -31,17 +32,29 @@ here=$(cd "$(dirname "$0")" && pwd)
 src=$(cd "$here/.." && pwd)
 # The CPU's sources, from its one file list.
 sources=$("$src/../filelist" "$src/cpu8085.f" | tr '\n' ' ')
+incdirs=$("$src/../filelist" --incdirs "$src/cpu8085.f" | sed 's/^/-I/' | tr '\n' ' ')
 mkdir -p "$out"
 ulimit -v 4000000
 
 # aig NAME [FILE MUTANT]: flatten the CPU to $out/NAME.aig (no outputs:
 # the assertions are the AIGER bad states, the assumptions its constraints),
-# with the source FILE of the list replaced by MUTANT if given.
+# with the source FILE of the list replaced by MUTANT if given (an included
+# .vh file: a copy of cpu8085.v next to copies of the includes, MUTANT as
+# FILE, since an include is looked for first next to the file that has it).
 aig() {
   local srcs=$sources
-  [ $# -lt 3 ] || srcs=${srcs/$src\/$2/$3}
+  if [ $# -ge 3 ]; then
+    case "$2" in
+      *.vh)
+        mkdir -p "$out/$1.inc"
+        cp "$src"/*.vh "$src/cpu8085.v" "$out/$1.inc/"
+        cp "$3" "$out/$1.inc/$2"
+        srcs=${srcs/$src\/cpu8085.v/$out/$1.inc/cpu8085.v} ;;
+      *) srcs=${srcs/$src\/$2/$3} ;;
+    esac
+  fi
   timeout 300 yosys -q -l "$out/$1.yosys.log" -p "
-    read_verilog -formal $srcs
+    read_verilog -formal $incdirs $srcs
     prep -top cpu8085
     flatten
     delete -output cpu8085/o:*
@@ -59,18 +72,30 @@ pdr() {
   fi
 }
 
-# decoder DECODE_V NAME: the decoder alone, all opcodes, by yosys sat.
+# decoder NAME: the decode function alone (a module around it that
+# asserts its classes one-hot), all opcodes, by yosys sat.
 decoder() {
-  timeout 300 yosys -q -l "$out/$2.yosys.log" -p "
-    read_verilog -formal $1
-    prep -top cpu8085_decode
+  cat > "$out/$1.v" <<'EOF'
+module decode_onehot (input wire [7:0] i_ir);
+`include "cpu8085_decode.vh"
+  wire [42:0] all = decode_all(i_ir);
+  wire [38:0] cls = all[42:4];
+  always @* begin
+    assert (cls != 39'd0);
+    assert ((cls & (cls - 39'd1)) == 39'd0);
+  end
+endmodule
+EOF
+  timeout 300 yosys -q -l "$out/$1.yosys.log" -p "
+    read_verilog -formal $incdirs $out/$1.v
+    prep -top decode_onehot
     sat -prove-asserts -verify" > /dev/null 2>&1
 }
 
 fails=0
 if [ "$what" = all ] || [ "$what" = proof ]; then
   t0=$(date +%s)
-  if decoder "$src/cpu8085_decode.v" decoder; then
+  if decoder decoder; then
     echo "cpu8085_formal: decoder classes one-hot for all 256 opcodes ($(( $(date +%s) - t0 )) s)"
   else
     echo "cpu8085_formal: decoder FAILED (see $out/decoder.yosys.log)"
@@ -93,12 +118,12 @@ fi
 
 # Mutants: "file|description|sed expression". Each must make the proof fail.
 mutants=(
-  "cpu8085_decode.v|PUSH fetched in 4 T instead of 6|s/o_is_ccc | o_is_rcc | o_is_rst | o_is_push;/o_is_ccc | o_is_rcc | o_is_rst;/"
-  "cpu8085_decode.v|MVI r also matches MVI M (classes overlap)|s/assign o_is_mvi_r = g0 \& sss_m \& ~ddd_m;/assign o_is_mvi_r = g0 \& sss_m;/"
+  "cpu8085_decode.vh|PUSH fetched in 4 T instead of 6|s/dc_ccc | dc_rcc | dc_rst | dc_push;/dc_ccc | dc_rcc | dc_rst;/"
+  "cpu8085_decode.vh|MVI r also matches MVI M (classes overlap)|s/dc_mvi_r = g0 \& sss_m \& ~ddd_m;/dc_mvi_r = g0 \& sss_m;/"
   "cpu8085.v|LXI ends after its first operand byte|s/if (is_mem_rmw | is_lxi | is_dad | is_pop_ret/if (is_mem_rmw | is_dad | is_pop_ret/"
-  "cpu8085.v|Jcc not taken reads the high address byte too|s/if (is_jcc) seq_last = mc_2 || !cond;/if (is_jcc) seq_last = mc_2;/"
-  "cpu8085.v|XTHL runs one cycle too many|s/if (is_xthl) seq_last = mc_4;/if (is_xthl) seq_last = (mc_q == 3'd5);/"
-  "cpu8085.v|write strobe also in memory reads|s/assign o_wr = is_t2 \&\& (seq_cyc == CY_MW/assign o_wr = is_t2 \&\& (seq_cyc == CY_MR || seq_cyc == CY_MW/"
+  "cpu8085.v|Jcc not taken reads the high address byte too|s/if (is_jcc) seq_last = at_2 || !cond_ir(ddd);/if (is_jcc) seq_last = at_2;/"
+  "cpu8085.v|XTHL runs one cycle too many|s/if (is_xthl) seq_last = at_4;/if (is_xthl) seq_last = (mc == 3'd5);/"
+  "cpu8085.v|write strobe also in memory reads|s/wr_q <= (cyc_q == CY_MW/wr_q <= (cyc_q == CY_MR || cyc_q == CY_MW/"
 )
 if [ "$what" = all ] || [ "$what" = mutants ]; then
   n=0

@@ -1,0 +1,67 @@
+// One T-state of a Verilated 8085 model (cpu8085, board8085) with one
+// eval() instead of two (docs/cpu8085.md "Speed").
+//
+// In these designs every flop is clocked by the rising edge of i_clk and
+// no logic follows an input combinationally (no input-driven region): an
+// eval() with the clock low runs nothing but Verilator's bookkeeping. What
+// it does is store i_clk = 0, the value the next eval() compares with to
+// see a rising edge (Verilator 5.006: the root's __Vtrigrprev__TOP__i_clk).
+// OneEvalClock stores that 0 itself and evaluates the rising edge only.
+// It falls back to the harness's two evals (clock_low, clock_high) when a
+// waveform is written (it shows both edges) and when the model has no such
+// member (another Verilator release): the compiler picks the path.
+#pragma once
+
+#include <type_traits>
+#include <utility>
+
+#include "harness.hpp"
+
+namespace cpu8085 {
+
+// Whether a Verilated root class stores the clock's previous value where
+// OneEvalClock expects it.
+template <class Root, class = void>
+struct HasClockTrigger : std::false_type {};
+template <class Root>
+struct HasClockTrigger<Root, std::void_t<decltype(std::declval<Root&>().__Vtrigrprev__TOP__i_clk)>>
+    : std::true_type {};
+
+template <class V>
+class OneEvalClock {
+ public:
+  using Root = std::remove_pointer_t<decltype(std::declval<V&>().rootp)>;
+  // The root's header must be included (an incomplete root would silently
+  // take the two-eval path).
+  static_assert(sizeof(Root) > 0, "include the model's V*___024root.h");
+  static constexpr bool kSupported = HasClockTrigger<Root>::value;
+
+  // `waveform`: a waveform is being written (the two-eval path).
+  OneEvalClock(contour::tb::Harness<V>& h, bool waveform) : h_(h), one_eval_(kSupported && !waveform) {}
+
+  bool one_eval() const { return one_eval_; }
+
+  // Before the bus is served: the clock low (nothing to do on one eval).
+  void low() {
+    if (!one_eval_) h_.clock_low();
+  }
+  // The rising edge that ends the T-state.
+  void high() {
+    if constexpr (kSupported) {
+      if (one_eval_) {
+        V& top = h_.top();
+        top.rootp->__Vtrigrprev__TOP__i_clk = 0;
+        top.i_clk = 1;
+        top.eval();
+        return;
+      }
+    }
+    h_.clock_high();
+  }
+
+ private:
+  contour::tb::Harness<V>& h_;
+  bool one_eval_;
+};
+
+}  // namespace cpu8085
