@@ -86,6 +86,7 @@ module interp3_core #(
 
   localparam integer HW = W + 1;  // width of a discriminant's half
   localparam integer K = HW / 2;  // low part of the carry-select adders
+  localparam integer NG = (HW + 7) / 8;  // copies of each multiplexer select: one per 8 bits
 
   // p + q (mod 2^HW) as a carry-select adder: the low K bits, and the high
   // part both without and with their carry-in, chosen by the low part's
@@ -112,11 +113,12 @@ module interp3_core #(
   reg [HW-1:0] nb_q, nc_q;            // -b, -c (L1)
   reg [HW-1:0] dxy_q, dxz_q, dyz_q;   // halves of the initial discriminants (L1)
   // Load phases: p1_q after L0, p2_q after L1, p3_q after L2; ldph_q any.
-  // Per discriminant (fan-out), the multiplexers' selects: z*_q = p1 or p2
-  // (the new half is 0), d*_q = p2 (the operands are the initial half).
+  // The multiplexers' selects, per discriminant and per 8 bits (fan-out):
+  // z*_q = p1 or p2 (the new half is 0), ds*_q = p2 (the operands are the
+  // initial half).
   reg p1_q, p2_q, p3_q, ldph_q;
-  (* keep *) reg zxy_q, zxz_q, zyz_q;
-  (* keep *) reg dsxy_q, dsxz_q, dsyz_q;
+  (* keep *) reg [NG-1:0] zxy_q, zxz_q, zyz_q;
+  (* keep *) reg [NG-1:0] dsxy_q, dsxz_q, dsyz_q;
   // Interpolation state.
   reg [W-1:0] x_q, y_q, z_q;          // distance travelled
   reg rx_q, ry_q, rz_q;               // distance left: x < a
@@ -127,9 +129,13 @@ module interp3_core #(
   reg [HW-1:0] cyz1_q, cyz2_q;        // eyz candidates: after Y, after Z
   reg [2:0] s_q;                      // next step {Z, Y, X}; 111 while loading
   // Copies of the bit of s_q that picks each discriminant's first
-  // candidate (X, X, Y): the multiplexers' selects, one register each.
-  (* keep *) reg sxy_q, sxz_q, syz_q;
+  // candidate (X, X, Y): the multiplexers' selects, per 8 bits.
+  (* keep *) reg [NG-1:0] sxy_q, sxz_q, syz_q;
   reg act_q;                          // ready and not done
+  // Registered step enables: the axis that steps on a command (act_q and
+  // s_q), and whether a command changes each discriminant.
+  reg mx_q, my_q, mz_q;
+  reg kxy_q, kxz_q, kyz_q;
 
   wire sx = s_q[0];
   wire sy = s_q[1];
@@ -137,31 +143,47 @@ module interp3_core #(
   // A step in this clock (a load in the same clock wins: every register a
   // step changes is set by the load, or prepared again after it).
   wire go = i_cmd & act_q;
-  wire mv_x = go & sx;
-  wire mv_y = go & sy;
-  wire mv_z = go & sz;
+  wire mv_x = i_cmd & mx_q;
+  wire mv_y = i_cmd & my_q;
+  wire mv_z = i_cmd & mz_q;
 
   // ------------------------------------------------------------- datapath
   // The new half of each discriminant: the candidate of the stepping axis;
   // 0 in the clocks after L0 and L1; the first candidate (s_q = 111),
   // which is then the initial half, in the clock after L2.
-  wire [HW-1:0] mxy = zxy_q ? {HW{1'b0}} : sxy_q ? cxy1_q : cxy2_q;
-  wire [HW-1:0] mxz = zxz_q ? {HW{1'b0}} : sxz_q ? cxz1_q : cxz2_q;
-  wire [HW-1:0] myz = zyz_q ? {HW{1'b0}} : syz_q ? cyz1_q : cyz2_q;
+  // (Each select copied to every bit of its group.)
+  wire [HW-1:0] sxy_e, sxz_e, syz_e, zxy_e, zxz_e, zyz_e, dsxy_e, dsxz_e, dsyz_e;
+  genvar gi;
+  generate
+    for (gi = 0; gi < HW; gi = gi + 1) begin : g_sel
+      assign sxy_e[gi] = sxy_q[gi/8];
+      assign sxz_e[gi] = sxz_q[gi/8];
+      assign syz_e[gi] = syz_q[gi/8];
+      assign zxy_e[gi] = zxy_q[gi/8];
+      assign zxz_e[gi] = zxz_q[gi/8];
+      assign zyz_e[gi] = zyz_q[gi/8];
+      assign dsxy_e[gi] = dsxy_q[gi/8];
+      assign dsxz_e[gi] = dsxz_q[gi/8];
+      assign dsyz_e[gi] = dsyz_q[gi/8];
+    end
+  endgenerate
+  wire [HW-1:0] mxy = ~zxy_e & ((sxy_e & cxy1_q) | (~sxy_e & cxy2_q));
+  wire [HW-1:0] mxz = ~zxz_e & ((sxz_e & cxz1_q) | (~sxz_e & cxz2_q));
+  wire [HW-1:0] myz = ~zyz_e & ((syz_e & cyz1_q) | (~syz_e & cyz2_q));
   // The operands: in the clock after L1 the initial half (so that both
   // candidates become it), then the move's constants.
   wire [HW-1:0] a_h = {1'b0, a_q};
   wire [HW-1:0] b_h = {1'b0, b_q};
-  wire [HW-1:0] oxy1 = dsxy_q ? dxy_q : nb_q;
-  wire [HW-1:0] oxy2 = dsxy_q ? dxy_q : a_h;
-  wire [HW-1:0] oxz1 = dsxz_q ? dxz_q : nc_q;
-  wire [HW-1:0] oxz2 = dsxz_q ? dxz_q : a_h;
-  wire [HW-1:0] oyz1 = dsyz_q ? dyz_q : nc_q;
-  wire [HW-1:0] oyz2 = dsyz_q ? dyz_q : b_h;
+  wire [HW-1:0] oxy1 = (dsxy_e & dxy_q) | (~dsxy_e & nb_q);
+  wire [HW-1:0] oxy2 = (dsxy_e & dxy_q) | (~dsxy_e & a_h);
+  wire [HW-1:0] oxz1 = (dsxz_e & dxz_q) | (~dsxz_e & nc_q);
+  wire [HW-1:0] oxz2 = (dsxz_e & dxz_q) | (~dsxz_e & a_h);
+  wire [HW-1:0] oyz1 = (dsyz_e & dyz_q) | (~dsyz_e & nc_q);
+  wire [HW-1:0] oyz2 = (dsyz_e & dyz_q) | (~dsyz_e & b_h);
   // Which discriminants change in this clock (s_q is one-hot when act_q).
-  wire en_xy = ldph_q | (go & ~sz);
-  wire en_xz = ldph_q | (go & ~sy);
-  wire en_yz = ldph_q | (go & ~sx);
+  wire en_xy = ldph_q | (i_cmd & kxy_q);
+  wire en_xz = ldph_q | (i_cmd & kxz_q);
+  wire en_yz = ldph_q | (i_cmd & kyz_q);
 
   // ------------------------------------------------------------ selection
   // The state after this clock's step under s_q (or while loading, under
@@ -251,23 +273,23 @@ module interp3_core #(
       p2_q <= 1'b0;
       p3_q <= 1'b0;
       ldph_q <= 1'b0;
-      zxy_q <= 1'b0;
-      zxz_q <= 1'b0;
-      zyz_q <= 1'b0;
-      dsxy_q <= 1'b0;
-      dsxz_q <= 1'b0;
-      dsyz_q <= 1'b0;
+      zxy_q <= {NG{1'b0}};
+      zxz_q <= {NG{1'b0}};
+      zyz_q <= {NG{1'b0}};
+      dsxy_q <= {NG{1'b0}};
+      dsxz_q <= {NG{1'b0}};
+      dsyz_q <= {NG{1'b0}};
     end else begin
       p1_q <= i_load;
       p2_q <= p1_q & ~i_load;
       p3_q <= p2_q & ~i_load;
       ldph_q <= i_load | p1_q | p2_q;
-      zxy_q <= i_load | p1_q;
-      zxz_q <= i_load | p1_q;
-      zyz_q <= i_load | p1_q;
-      dsxy_q <= p1_q & ~i_load;
-      dsxz_q <= p1_q & ~i_load;
-      dsyz_q <= p1_q & ~i_load;
+      zxy_q <= {NG{i_load | p1_q}};
+      zxz_q <= {NG{i_load | p1_q}};
+      zyz_q <= {NG{i_load | p1_q}};
+      dsxy_q <= {NG{p1_q & ~i_load}};
+      dsxz_q <= {NG{p1_q & ~i_load}};
+      dsyz_q <= {NG{p1_q & ~i_load}};
     end
   end
 
@@ -364,22 +386,28 @@ module interp3_core #(
   always @(posedge i_clk) begin
     if (i_rst) begin
       s_q <= 3'b000;
-      sxy_q <= 1'b0;
-      sxz_q <= 1'b0;
-      syz_q <= 1'b0;
+      sxy_q <= {NG{1'b0}};
+      sxz_q <= {NG{1'b0}};
+      syz_q <= {NG{1'b0}};
       act_q <= 1'b0;
+      {mx_q, my_q, mz_q} <= 3'b000;
+      {kxy_q, kxz_q, kyz_q} <= 3'b000;
     end else if (i_load) begin
       s_q <= 3'b111;
-      sxy_q <= 1'b1;
-      sxz_q <= 1'b1;
-      syz_q <= 1'b1;
+      sxy_q <= {NG{1'b1}};
+      sxz_q <= {NG{1'b1}};
+      syz_q <= {NG{1'b1}};
       act_q <= 1'b0;
+      {mx_q, my_q, mz_q} <= 3'b000;
+      {kxy_q, kxz_q, kyz_q} <= 3'b000;
     end else if (p3_q | go) begin
       s_q <= {selz_n, sely_n, selx_n};
-      sxy_q <= selx_n;
-      sxz_q <= selx_n;
-      syz_q <= sely_n;
+      sxy_q <= {NG{selx_n}};
+      sxz_q <= {NG{selx_n}};
+      syz_q <= {NG{sely_n}};
       act_q <= act_n;
+      {mx_q, my_q, mz_q} <= {selx_n, sely_n, selz_n};
+      {kxy_q, kxz_q, kyz_q} <= {selx_n | sely_n, selx_n | selz_n, sely_n | selz_n};
     end
   end
 
@@ -470,9 +498,11 @@ module interp3_core #(
       assert (e0xy_q == (a_q[0] ^ b_q[0]) && e0xz_q == (a_q[0] ^ c_f[0]) && e0yz_q == (b_q[0] ^ c_f[0]));
       assert ({1'b0, p1_q} + {1'b0, p2_q} + {1'b0, p3_q} <= 2'd1);
       assert (ldph_q == (p1_q | p2_q | p3_q));
-      assert (zxy_q == (p1_q | p2_q) && zxz_q == (p1_q | p2_q) && zyz_q == (p1_q | p2_q));
-      assert (dsxy_q == p2_q && dsxz_q == p2_q && dsyz_q == p2_q);
-      assert (sxy_q == sx && sxz_q == sx && syz_q == sy);
+      assert (zxy_q == {NG{p1_q | p2_q}} && zxz_q == {NG{p1_q | p2_q}} && zyz_q == {NG{p1_q | p2_q}});
+      assert (dsxy_q == {NG{p2_q}} && dsxz_q == {NG{p2_q}} && dsyz_q == {NG{p2_q}});
+      assert (sxy_q == {NG{sx}} && sxz_q == {NG{sx}} && syz_q == {NG{sy}});
+      assert ({mx_q, my_q, mz_q} == ({sx, sy, sz} & {3{act_q}}));
+      assert ({kxy_q, kxz_q, kyz_q} == ({~sz, ~sy, ~sx} & {3{act_q}}));
       if (!p1_q) begin
         assert (nb_q == zero_h - b_h && nc_q == zero_h - {1'b0, c_f});
         assert ({dxy_q, e0xy_q} == dxy_f && {dxz_q, e0xz_q} == dxz_f && {dyz_q, e0yz_q} == dyz_f);
