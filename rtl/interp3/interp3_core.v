@@ -10,9 +10,10 @@
 // bit e0 (constant during a move) and its "half" h = (e - e0) / 2 (W + 1
 // bits, two's complement; the sign of h is the sign of e).
 //
-// Built for the clock (docs/rtl-3axis.md, "Timing structure"): no register
-// is fed by a carry chain followed by logic, and no decision sits in front
-// of a carry chain, except one 2:1 multiplexer whose select is a register:
+// Built for the clock (docs/rtl-3axis.md, "Timing structure"): no decision
+// is computed in the clock that uses it; in front of each adder sits one
+// 2:1 multiplexer whose select is a register, behind it the choice of a
+// carry-select adder:
 //
 //   s_q         the axis of the next step, one-hot {Z, Y, X}, a register:
 //               computed in the clock before from registered bits only
@@ -22,6 +23,8 @@
 //               eyz: Y -> h - c, Z -> h + b)
 //   step        m = the candidate s_q picks (the new h); h <= m,
 //               c1 <= m + op1, c2 <= m + op2: one mux, one adder
+//               (carry-select); the selects are copied per 8 bits and
+//               the step enables are registers (mx_q, kxy_q, ...)
 //   selection   s_q's next value from the candidates' sign bits, the
 //               distance-left flags r and the last-step flags l (all
 //               registers), chosen by s_q
@@ -29,18 +32,20 @@
 //               kept by comparing x with a - 2 (a register) when X steps
 //
 // Timing: i_load in a clock (edge L0) takes the move, with priority over
-// i_cmd; it may abandon a running move. The core then prepares it for two
-// clocks (edges L1, L2) with o_ready low and takes its first command at
-// edge L3 at the earliest: a command while o_ready is low is ignored. In
+// i_cmd; it may abandon a running move. The core then prepares it for three
+// clocks (edges L1: -b, -c, the initial halves; L2: the candidates take the
+// initial half; L3: the half, the candidates, s_q) with o_ready low and
+// takes its first command at edge L4 at the earliest: a command while
+// o_ready is low is ignored. In
 // every clock with o_ready high, i_cmd high and the move not done, one axis
 // steps. Outputs are registered: o_step_* is high for the one clock after
 // the step, together with the state after it (the model's "state read after
 // the pulse is the state after the move"). o_done is valid from the clock
 // after the load; the state outputs once o_ready is high.
 //
-// Reset: synchronous, active high. Every register is reset (to the state of
-// the zero move, which is done and ready), so the invariants hold from
-// reset on.
+// Reset: synchronous, active high. Every register but the six candidate
+// registers is reset (to the state of the zero move, which is done and
+// ready); the candidates are read only after a load has prepared them.
 `default_nettype none
 
 module interp3_core #(
@@ -85,7 +90,7 @@ module interp3_core #(
   endgenerate
 
   localparam integer HW = W + 1;  // width of a discriminant's half
-  localparam integer K = HW / 2;  // low part of the carry-select adders
+  localparam integer K = (HW * 3) / 8;  // low part of the carry-select adders (9 of 25 bits)
   localparam integer NG = (HW + 7) / 8;  // copies of each multiplexer select: one per 8 bits
 
   // p + q (mod 2^HW) as a carry-select adder: the low K bits, and the high
@@ -284,12 +289,14 @@ module interp3_core #(
       p2_q <= p1_q & ~i_load;
       p3_q <= p2_q & ~i_load;
       ldph_q <= i_load | p1_q | p2_q;
-      zxy_q <= {NG{i_load | p1_q}};
-      zxz_q <= {NG{i_load | p1_q}};
-      zyz_q <= {NG{i_load | p1_q}};
-      dsxy_q <= {NG{p1_q & ~i_load}};
-      dsxz_q <= {NG{p1_q & ~i_load}};
-      dsyz_q <= {NG{p1_q & ~i_load}};
+      // Each copy XORs in (copy ^ original), 0 in every reachable state
+      // (proved below), so that synthesis cannot merge the copies.
+      zxy_q <= {NG{i_load | p1_q}} ^ zxy_q ^ {NG{p1_q | p2_q}};
+      zxz_q <= {NG{i_load | p1_q}} ^ zxz_q ^ {NG{p1_q | p2_q}};
+      zyz_q <= {NG{i_load | p1_q}} ^ zyz_q ^ {NG{p1_q | p2_q}};
+      dsxy_q <= {NG{p1_q & ~i_load}} ^ dsxy_q ^ {NG{p2_q}};
+      dsxz_q <= {NG{p1_q & ~i_load}} ^ dsxz_q ^ {NG{p2_q}};
+      dsyz_q <= {NG{p1_q & ~i_load}} ^ dsyz_q ^ {NG{p2_q}};
     end
   end
 
@@ -402,9 +409,9 @@ module interp3_core #(
       {kxy_q, kxz_q, kyz_q} <= 3'b000;
     end else if (p3_q | go) begin
       s_q <= {selz_n, sely_n, selx_n};
-      sxy_q <= {NG{selx_n}};
-      sxz_q <= {NG{selx_n}};
-      syz_q <= {NG{sely_n}};
+      sxy_q <= {NG{selx_n}} ^ sxy_q ^ {NG{sx}};  // (copy ^ original) as above
+      sxz_q <= {NG{selx_n}} ^ sxz_q ^ {NG{sx}};
+      syz_q <= {NG{sely_n}} ^ syz_q ^ {NG{sy}};
       act_q <= act_n;
       {mx_q, my_q, mz_q} <= {selx_n, sely_n, selz_n};
       {kxy_q, kxz_q, kyz_q} <= {selx_n | sely_n, selx_n | selz_n, sely_n | selz_n};
