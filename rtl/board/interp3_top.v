@@ -160,7 +160,8 @@ module interp3_top #(
   wire dda_on = boundary ? q_valid : (i_ce && rem_q != 0);
   wire tick = dda_on && dda_sum >= cycle_w;
   wire to_next = boundary || due_q;        // the tick belongs to the chord not yet loaded
-  wire cmd = loaded_q && !pop && owed_q != 16'd0 && out_idle;
+  wire core_ready;  // interp3_core has prepared the loaded chord (3 clocks after the load)
+  wire cmd = loaded_q && !pop && owed_q != 16'd0 && out_idle && core_ready;
 
   move_fifo #(.WIDTH(QW), .AW(QAW)) u_queue (
       .i_clk(i_clk), .i_rst(i_rst), .i_flush(abort), .i_push(push), .i_data(q_in),
@@ -248,7 +249,7 @@ module interp3_top #(
       .i_xe(q_data[W-1:0]), .i_ye(q_data[2*W:W+1]), .i_ze(q_data[3*W+1:2*W+2]),
       .i_xneg(q_data[W]), .i_yneg(q_data[2*W+1]), .i_zneg(q_data[3*W+2]),
       .i_cmd(cmd), .o_step_x(sx), .o_step_y(sy), .o_step_z(sz),
-      .o_dir_x(dir_x), .o_dir_y(dir_y), .o_dir_z(dir_z), .o_done(core_done),
+      .o_dir_x(dir_x), .o_dir_y(dir_y), .o_dir_z(dir_z), .o_done(core_done), .o_ready(core_ready),
       .o_x(unused_x), .o_y(unused_y), .o_z(unused_z), .o_exy(unused_exy), .o_exz(unused_exz), .o_eyz(unused_eyz)
   );
 

@@ -45,7 +45,7 @@ module timing_wrap (
 `elsif DESIGN_INTERP3
   localparam integer W = 24;
   localparam integer NI = 3 * W + 6;  // ends, signs, load, cmd, reset
-  localparam integer NO = 7 + 3 * W + 3 * (W + 2);
+  localparam integer NO = 8 + 3 * W + 3 * (W + 2);  // the state, then o_ready
 `elsif DESIGN_CPU8085
   localparam integer NI = 15;
   localparam integer NO = 38;
@@ -138,7 +138,7 @@ module timing_wrap (
       .o_dir_x(outs[3]), .o_dir_y(outs[4]), .o_dir_z(outs[5]), .o_done(outs[6]),
       .o_x(outs[7 +: W]), .o_y(outs[7 + W +: W]), .o_z(outs[7 + 2 * W +: W]),
       .o_exy(outs[7 + 3 * W +: W + 2]), .o_exz(outs[9 + 4 * W +: W + 2]),
-      .o_eyz(outs[11 + 5 * W +: W + 2])
+      .o_eyz(outs[11 + 5 * W +: W + 2]), .o_ready(outs[13 + 6 * W])
   );
 `elsif DESIGN_CPU8085
   cpu8085 u_dut (

@@ -201,7 +201,52 @@ TEST(Interp3W4, DocumentedTimingOfTheMove2m10) {
   EXPECT_EQ(h.state(), (State3{2, -1, 0, 1, 2, 1, 3, true}));
   EXPECT_FALSE(h.step(true).has_value());
   EXPECT_EQ(h.state(), (State3{2, -1, 0, 1, 2, 1, 3, true}));
-  EXPECT_EQ(h.clocks(), 1u + 1u + 4u);  // reset, load, four command clocks
+  EXPECT_EQ(h.clocks(), 1u + 1u + 3u + 4u);  // reset, load, three preparing clocks, four command clocks
+}
+
+// The preparation after a load, clock by clock (docs/rtl-3axis.md,
+// "Timing"): o_ready low for exactly three clocks, o_done already the new
+// move's, and the command held high in those clocks moves nothing; the
+// first pulse comes in the clock after the fourth edge from the load.
+TEST(Interp3W4, CommandsWhilePreparingAreIgnored) {
+  H4 h;
+  h.load(-3, 0, 1);  // a move to abandon: its state must not leak
+  ASSERT_TRUE(h.step(true).has_value());
+  auto& t = h.top();
+  t.i_xe = 2;
+  t.i_ye = 1;
+  t.i_ze = 0;
+  t.i_xneg = 0;
+  t.i_yneg = 1;
+  t.i_zneg = 0;
+  t.i_load = 1;
+  t.i_cmd = 1;  // the load wins
+  h.tick();
+  t.i_load = 0;
+  for (unsigned k = 0; k < 3; ++k) {
+    EXPECT_FALSE(h.ready()) << "clock " << k;
+    EXPECT_FALSE(h.done()) << "clock " << k;
+    EXPECT_EQ(h.strobes(), 0u) << "clock " << k;
+    EXPECT_EQ(t.o_x, 0u);
+    EXPECT_EQ(t.o_y, 0u);
+    t.i_cmd = 1;
+    h.tick();
+  }
+  EXPECT_TRUE(h.ready());
+  EXPECT_EQ(h.strobes(), 0u);
+  const State3 s = h.state();  // its pulse count is the harness's, not the core's
+  EXPECT_EQ((State3{s.x, s.y, s.z, s.dxy, s.dxz, s.dyz, 0, s.done}), (State3{0, 0, 0, 1, 2, 1, 0, false}));
+  EXPECT_EQ(h.step(true), (Pulse{Axis::X, +1}));
+  EXPECT_EQ(h.step(true), (Pulse{Axis::Y, -1}));
+  EXPECT_EQ(h.step(true), (Pulse{Axis::X, +1}));
+  EXPECT_TRUE(h.done());
+  // The zero move: done from the clock after its load, ready three later.
+  t.i_xe = t.i_ye = t.i_ze = 0;
+  t.i_load = 1;
+  h.tick();
+  t.i_load = 0;
+  EXPECT_TRUE(h.done());
+  EXPECT_FALSE(h.ready());
 }
 
 // The command input low in random clocks (1/3 of them, or long holds):

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -36,8 +37,10 @@ class Interp3Harness : public tb::Harness<V> {
     pulses_ = 0;
   }
 
-  // Loads the move (XE, YE, ZE) in one clock. Throws InputError outside the
-  // accepted domain (the host's validation, Linear3<W>::validate).
+  // Loads the move (XE, YE, ZE): the load clock, then the clocks in which
+  // the core prepares it (o_ready low, kPrepClocks of them), so that the
+  // next step() can pulse. Throws InputError outside the accepted domain
+  // (the host's validation, Linear3<W>::validate).
   void load(std::int64_t xe, std::int64_t ye, std::int64_t ze) {
     Linear3<W>::validate(xe, ye, ze);
     auto mag = [](std::int64_t v) { return static_cast<std::uint64_t>(v < 0 ? -v : v); };
@@ -51,8 +54,18 @@ class Interp3Harness : public tb::Harness<V> {
     top().i_cmd = 0;
     tick();
     top().i_load = 0;
+    for (unsigned k = 0; !top().o_ready; ++k) {
+      if (k == kPrepClocks) throw std::runtime_error("interp3_core: not ready " + std::to_string(k) + " clocks after a load");
+      tick();
+    }
     pulses_ = 0;
   }
+
+  // Clocks after the load clock in which the core prepares a move
+  // (docs/rtl-3axis.md, "Timing").
+  static constexpr unsigned kPrepClocks = 3;
+
+  bool ready() const { return top().o_ready; }
 
   // One clock with the command input at `cmd`; returns the output pulse of
   // that clock's step, if any (registered: visible after the edge, with the

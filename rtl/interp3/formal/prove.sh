@@ -28,14 +28,17 @@ core=$("$here/../../filelist" "$here/../interp3.f")
 [ "$(echo "$core" | wc -l)" -eq 1 ] || { echo "prove.sh: interp3.f must list one file" >&2; exit 2; }
 mkdir -p "$out"
 
-prove() {  # prove FILE W LOG -> status of yosys
+# MAXSTEPS bounds the search: the proof itself closes at induction length
+# 1; a mutant's counterexample from reset needs the reset, the load, its
+# three preparation clocks and a few steps.
+prove() {  # prove FILE W LOG [MAXSTEPS] -> status of yosys
   yosys -q -l "$3" -p "
     read_verilog -formal $1
     chparam -set W $2 interp3_core
     prep -top interp3_core
     async2sync
     dffunmap
-    sat -tempinduct -prove-asserts -set-assumes -seq 1 -maxsteps 4" > /dev/null 2>&1
+    sat -tempinduct -prove-asserts -set-assumes -seq 1 -maxsteps ${4:-4}" > /dev/null 2>&1
 }
 
 fails=0
@@ -69,10 +72,12 @@ done
 
 # Mutants: "description|sed expression". Each must make the proof fail.
 mutants=(
-  "load Exy = B - A instead of A - B|s/exy_q <= ld_xe - ld_ye;/exy_q <= ld_ye - ld_xe;/"
-  "X step leaves Exz unchanged|s/exz_d = exz_q - c2;/exz_d = exz_q;/"
-  "distance-left flag of X cleared one step late|s/rx_d = x_inc != a_q;/rx_d = x_q != a_q;/"
-  "selection ignores the sign of Eyz|s/(~rz_q | eyz_ge)/(1'b1)/"
+  "initial Exy from A - C instead of A - B|s/dxy_q <= {pre_xy\[HW-1\], pre_xy\[HW-1:1\]};/dxy_q <= {pre_xz[HW-1], pre_xz[HW-1:1]};/"
+  "X step leaves Exz unchanged|s/kyz_q} <= {selx_n | sely_n, selx_n | selz_n,/kyz_q} <= {selx_n | sely_n, selz_n,/"
+  "distance-left flag of X cleared one step late|s/rx_q <= ~lx_q;/rx_q <= x_q != a_q;/"
+  "selection ignores the sign of Eyz|s/(~rz_n | ~nyz_n)/(1'b1)/"
+  "Y candidate of Exy adds 2B instead of 2A|s/oxy2 = (dsxy_e \& dxy_q) | (~dsxy_e \& a_h);/oxy2 = (dsxy_e \& dxy_q) | (~dsxy_e \& b_h);/"
+  "carry-select adder picks the wrong high part|s/csel_add = {lo\[K\] ? hi1 : hi0/csel_add = {lo[K] ? hi0 : hi1/"
 )
 n=0
 for m in "${mutants[@]}"; do
@@ -83,7 +88,7 @@ for m in "${mutants[@]}"; do
   if cmp -s "$core" "$out/mutant$n.v"; then
     echo "interp3_formal: mutant $n ($desc) did not apply to the source"
     fails=$((fails + 1))
-  elif prove "$out/mutant$n.v" 2 "$out/mutant$n.log" && grep -q "model found for base case: FAIL" "$out/mutant$n.log"; then
+  elif prove "$out/mutant$n.v" 2 "$out/mutant$n.log" 12 && grep -q "model found for base case: FAIL" "$out/mutant$n.log"; then
     echo "interp3_formal: mutant $n ($desc) refuted from reset"
   else
     echo "interp3_formal: mutant $n ($desc) was NOT refuted (see $out/mutant$n.log)"
