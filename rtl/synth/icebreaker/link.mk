@@ -7,12 +7,16 @@
 LINK_DIR := $(BUILD)/icebreaker_link
 LINK_V := icebreaker/link_top.v $(shell $(RTL)/filelist $(RTL)/board/board.f)
 LINK_INC := $(addprefix -I,$(shell $(RTL)/filelist --incdirs $(RTL)/board/board.f))
+# The included tables (.vh) are inputs too: an edited table re-synthesises.
+LINK_VH := $(foreach d,$(shell $(RTL)/filelist --incdirs $(RTL)/board/board.f),$(wildcard $(d)/*.vh))
+# nextpnr's placement seed (`make synth` reports seed 1)
+SEED ?= 1
 
 .PHONY: link-bitstream
 link-bitstream: $(LINK_DIR)/link.bin
 	@echo "icebreaker link bitstream: $<"
 
-$(LINK_DIR)/netlist.json: $(LINK_V)
+$(LINK_DIR)/netlist.json: $(LINK_V) $(LINK_VH)
 	@mkdir -p $(@D)
 	@echo "synth: yosys icebreaker_link"
 	@$(YOSYS) -q -l $(@D)/yosys.log -p "read_verilog $(LINK_INC) $(LINK_V); synth_ice40 -abc9 -top link_top -json $@"
