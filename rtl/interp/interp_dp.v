@@ -116,7 +116,11 @@ module interp_dp #(
   // An inward step from ci == 1 crosses onto the next quadrant (arcs only;
   // in the end quadrant ci never falls below ti >= 1).
   // (ci_one_q is 0 on a line.)
-  wire xing = ~kz & ci_one_q;
+  // xing_q = ~kz & ci_one, a register of its own (formed with ci_one's
+  // next value): it selects wide multiplexers (SUB, ci), so it is one net
+  // from a flip-flop, not a LUT after two.
+  reg xing_q;
+  wire xing = xing_q;
 
   // Would this step end the move? In the end quadrant only when one axis
   // has arrived and the other has one step left, and then the end-point
@@ -124,8 +128,22 @@ module interp_dp #(
   // an inward step (D >= 0) crosses onto the end point itself.
   wire last = lastk_q | (d_pos & xf_q);
 
-  wire ld = i_valid & (done | (st & last));
+  // The load, ld = valid & (done | st & last), is the decision with the
+  // largest fan-out (every register's enable or load multiplexer, the
+  // queue's read side), and the command is the late input of the clock. So
+  // ld is one LUT after the command: its two other terms are formed from
+  // flip-flops alone, and each is kept (a LUT boundary for abc, which
+  // would otherwise put the command through the decision's whole depth).
+  (* keep *) wire ld_idle = i_valid & done;   // a block waits, none runs
+  (* keep *) wire ld_last = i_valid & last;   // a block waits, this step ends the run
+  (* keep *) wire ld = ld_idle | (i_cmd & ld_last);
   assign o_ready = ld;
+
+  // The step enables the same way: a register-only term each, the
+  // command ANDed in one LUT before the flip-flops' enables.
+  wire e_in = busy & inw;                  // ci and the inward flags
+  wire e_out = busy & (~inw | xing);       // co and the outward flags
+  wire e_x = busy & inw & xing;            // a crossing: q, k
 
   // Axis of the inward step: X for a line; for an arc X when the quadrant
   // is even XOR clockwise.
@@ -139,7 +157,6 @@ module interp_dp #(
   wire pulse_neg = arc_q ? ((pulse_x ? qxn : qyn) ^ inw) : (pulse_x ? sxn_q : syn_q);
 
   // ------------------------------------------------------- next values
-  wire [W:0] two = {{(W-1){1'b0}}, 2'b10};
   wire [W+1:0] d_in = d_q - {1'b0, sub_q};
   wire [W+1:0] d_out = d_q + {1'b0, add_q};
   // ci: -1 (arc) or +1 (line) in one carry chain whose operand is a
@@ -162,56 +179,78 @@ module interp_dp #(
   // ti == 0 is co == ti right after a crossing (co = 0): ti = tim1 + 1.
   wire ti_z = (tim1_q == {(W+2){1'b1}});
 
+  // Clock enables, ld | st & e for a step term e, written
+  // ld_idle | i_cmd & (ld_last | e): one LUT after the command, beside ld
+  // rather than after it (ld then reaches only the load multiplexers). A
+  // register with a reset takes it inside its enable (i_rst is in ldr_idle),
+  // the iCE40 flip-flop's own sync reset.
+  wire ldr_idle = i_rst | ld_idle;
+  wire le_st = ld_last | busy;
+  wire le_in = ld_last | e_in;
+  wire le_out = ld_last | e_out;
+  wire le_x = ld_last | e_x;
+  wire ce_st = ld_idle | (i_cmd & le_st);
+  wire cer_st = ldr_idle | (i_cmd & le_st);
+  wire ce_in = ld_idle | (i_cmd & le_in);
+  wire ce_out = ld_idle | (i_cmd & le_out);
+  wire cer_x = ldr_idle | (i_cmd & le_x);
+
   // D: cleared by a load, else one add per step. Not reset: like the
   // magnitudes, it means nothing until a block is loaded (a reset in its
   // clear would put i_rst into the load's fan-out).
   always @(posedge i_clk) begin
-    if (ld) d_q <= {(W+2){1'b0}};
-    else if (st) d_q <= inw ? d_in : d_out;
+    if (ce_st) d_q <= ld ? {(W+2){1'b0}} : inw ? d_in : d_out;
   end
 
   // SUB = 2|c_in| - 1 (arc) / B (line).
   always @(posedge i_clk) begin
-    if (ld) sub_q <= l_sub;
-    else if (st & inw & arc_q) sub_q <= xing ? add_q - two : sub_q - two;
+    if (ce_in) sub_q[W:1] <= ld ? l_sub[W:1] : (xing ? add_q[W:1] : sub_q[W:1]) - {{(W-1){1'b0}}, arc_q};
+  end
+
+  // Bit 0 of SUB and ADD: a line's constants, 1 throughout an arc (odd
+  // values stepped by 2): set by the load alone (no step enable).
+  always @(posedge i_clk) begin
+    if (ld) begin
+      sub_q[0] <= l_sub[0];
+      add_q[0] <= l_add[0];
+    end
   end
 
   // ADD = 2|c_out| + 1 (arc) / A (line); 1 after a crossing.
   always @(posedge i_clk) begin
-    if (ld) add_q <= l_add;
-    else if (st & arc_q & (~inw | xing)) add_q <= inw ? {{W{1'b0}}, 1'b1} : add_q + two;
+    if (ce_out) add_q[W:1] <= ld ? l_add[W:1] : inw ? {W{1'b0}} : add_q[W:1] + {{(W-1){1'b0}}, arc_q};
   end
 
   // ci: inward-axis magnitude; takes co's value at a crossing.
   always @(posedge i_clk) begin
-    if (ld) ci_q <= l_ci;
-    else if (st & inw) ci_q <= ci_step | ci_xing;
+    if (ce_in) ci_q <= ld ? l_ci : ci_step | ci_xing;
   end
 
   // co: outward-axis magnitude; 0 after a crossing.
   always @(posedge i_clk) begin
-    if (ld) co_q <= l_co;
-    else if (st & (~inw | xing)) co_q <= inw ? {W{1'b0}} : co_q + 1'b1;
+    if (ce_out) co_q <= ld ? l_co : inw ? {W{1'b0}} : co_q + 1'b1;
   end
 
   // Quadrant and crossings left; k = 0 with both axes exhausted is "done",
   // which is also the reset state.
   always @(posedge i_clk) begin
-    if (i_rst) begin
-      q_q <= 2'd0;
-      k_q <= 3'd0;
-      kz_q <= 1'b1;
-      k1z_q <= 1'b0;
-    end else if (ld) begin
-      q_q <= l_q;
-      k_q <= l_k;
-      kz_q <= (l_k == 3'd0);
-      k1z_q <= (l_k == 3'd1) & l_arc & l_flags[F_TO_Z];
-    end else if (st & inw & xing) begin
-      q_q <= cw_q ? q_q - 1'b1 : q_q + 1'b1;
-      k_q <= k_q - 1'b1;
-      kz_q <= (k_q == 3'd1);
-      k1z_q <= (k_q == 3'd2) & to_z_q;
+    if (cer_x) begin
+      if (i_rst) begin
+        q_q <= 2'd0;
+        k_q <= 3'd0;
+        kz_q <= 1'b1;
+        k1z_q <= 1'b0;
+      end else if (ld) begin
+        q_q <= l_q;
+        k_q <= l_k;
+        kz_q <= (l_k == 3'd0);
+        k1z_q <= (l_k == 3'd1) & l_arc & l_flags[F_TO_Z];
+      end else begin
+        q_q <= cw_q ? q_q - 1'b1 : q_q + 1'b1;
+        k_q <= k_q - 1'b1;
+        kz_q <= (k_q == 3'd1);
+        k1z_q <= (k_q == 3'd2) & to_z_q;
+      end
     end
   end
 
@@ -231,41 +270,38 @@ module interp_dp #(
     end
   end
 
-  // Inward-axis flags: change on inward steps only.
+  // Inward-axis flags: change on inward steps only. Not reset, like D:
+  // they mean nothing until a block is loaded (with done set, nothing
+  // reads them), and a reset would put i_rst into their enables.
   always @(posedge i_clk) begin
-    if (i_rst) begin
-      in_ex_q <= 1'b1;
-      in_one_q <= 1'b0;
-      ci_one_q <= 1'b0;
-    end else if (ld) begin
-      in_ex_q <= l_flags[F_IN_EX];
-      in_one_q <= l_flags[F_IN_ONE];
-      ci_one_q <= l_flags[F_CI_ONE];
-    end else if (st & inw) begin
-      in_ex_q <= xing ? co_ti_q : in_one_q;
-      in_one_q <= xing ? c_co_ti1 : c_ci_ti2;
-      ci_one_q <= arc_q & (xing ? c_co_one : c_ci_two);
+    if (ce_in) begin
+      if (ld) begin
+        in_ex_q <= l_flags[F_IN_EX];
+        in_one_q <= l_flags[F_IN_ONE];
+        ci_one_q <= l_flags[F_CI_ONE];
+      end else begin
+        in_ex_q <= xing ? co_ti_q : in_one_q;
+        in_one_q <= xing ? c_co_ti1 : c_ci_ti2;
+        ci_one_q <= arc_q & (xing ? c_co_one : c_ci_two);
+      end
+      if (ld) xing_q <= (l_k != 3'd0) & l_flags[F_CI_ONE];
+      else xing_q <= arc_q & (xing ? (k_q != 3'd1) & c_co_one : ~kz & c_ci_two);
     end
   end
 
-  // Outward-axis flags: change on outward steps and at crossings.
+  // Outward-axis flags: change on outward steps and at crossings; not
+  // reset either.
   always @(posedge i_clk) begin
-    if (i_rst) begin
-      out_ex_q <= 1'b1;
-      out_one_q <= 1'b0;
-      co_ti_q <= 1'b0;
-    end else if (ld) begin
-      out_ex_q <= l_flags[F_OUT_EX];
-      out_one_q <= l_flags[F_OUT_ONE];
-      co_ti_q <= l_flags[F_CO_TI];
-    end else if (st & ~inw) begin
-      out_ex_q <= out_one_q;
-      out_one_q <= c_co_to2;
-      co_ti_q <= c_co_tim1;
-    end else if (st & xing) begin
-      out_ex_q <= to_z_q;
-      out_one_q <= to_one_q;
-      co_ti_q <= ti_z;
+    if (ce_out) begin
+      if (ld) begin
+        out_ex_q <= l_flags[F_OUT_EX];
+        out_one_q <= l_flags[F_OUT_ONE];
+        co_ti_q <= l_flags[F_CO_TI];
+      end else begin
+        out_ex_q <= ~inw ? out_one_q : to_z_q;      // outward step : crossing
+        out_one_q <= ~inw ? c_co_to2 : to_one_q;
+        co_ti_q <= ~inw ? c_co_tim1 : ti_z;
+      end
     end
   end
 
@@ -276,27 +312,36 @@ module interp_dp #(
   wire l_k1z = (l_k == 3'd1) & l_arc & l_flags[F_TO_Z];
   wire kz_x = (k_q == 3'd1);                     // k after a crossing is 0
   wire k1z_x = (k_q == 3'd2) & to_z_q;
+  // Their values after a step: inward within the quadrant, crossing,
+  // outward (from flip-flops only; the command enables the registers).
+  wire in_stay = inw & ~xing;
+  wire done_s = in_stay ? kz & in_one_q & out_ex_q
+              : inw ? kz_x & co_ti_q & to_z_q
+              : kz & in_ex_q & out_one_q;
+  wire lastk_s = in_stay ? kz & ((c_ci_ti2 & out_ex_q) | (in_one_q & out_one_q))
+               : inw ? kz_x & ((c_co_ti1 & to_z_q) | (co_ti_q & to_one_q))
+               : kz & ((in_one_q & out_one_q) | (in_ex_q & c_co_to2));
+  wire xf_s = in_stay ? k1z_q & arc_q & c_ci_two & co_ti_q
+            : inw ? k1z_x & c_co_one & ti_z
+            : k1z_q & ci_one_q & c_co_tim1;
+  // done_q is reset (the idle state); the other two are not (read only
+  // while a move runs).
   always @(posedge i_clk) begin
-    if (i_rst) begin
-      done_q <= 1'b1;
-      lastk_q <= 1'b0;
-      xf_q <= 1'b0;
-    end else if (ld) begin
-      done_q <= l_kz & l_flags[F_IN_EX] & l_flags[F_OUT_EX];
-      lastk_q <= l_kz & ((l_flags[F_IN_ONE] & l_flags[F_OUT_EX]) | (l_flags[F_IN_EX] & l_flags[F_OUT_ONE]));
-      xf_q <= l_k1z & l_flags[F_CI_ONE] & l_flags[F_CO_TI];
-    end else if (st & inw & ~xing) begin
-      done_q <= kz & in_one_q & out_ex_q;
-      lastk_q <= kz & ((c_ci_ti2 & out_ex_q) | (in_one_q & out_one_q));
-      xf_q <= k1z_q & arc_q & c_ci_two & co_ti_q;
-    end else if (st & inw & xing) begin
-      done_q <= kz_x & co_ti_q & to_z_q;
-      lastk_q <= kz_x & ((c_co_ti1 & to_z_q) | (co_ti_q & to_one_q));
-      xf_q <= k1z_x & c_co_one & ti_z;
-    end else if (st & ~inw) begin
-      done_q <= kz & in_ex_q & out_one_q;
-      lastk_q <= kz & ((in_one_q & out_one_q) | (in_ex_q & c_co_to2));
-      xf_q <= k1z_q & ci_one_q & c_co_tim1;
+    if (cer_st) begin
+      if (i_rst) done_q <= 1'b1;
+      else if (ld) done_q <= l_kz & l_flags[F_IN_EX] & l_flags[F_OUT_EX];
+      else done_q <= done_s;
+    end
+  end
+  always @(posedge i_clk) begin
+    if (ce_st) begin
+      if (ld) begin
+        lastk_q <= l_kz & ((l_flags[F_IN_ONE] & l_flags[F_OUT_EX]) | (l_flags[F_IN_EX] & l_flags[F_OUT_ONE]));
+        xf_q <= l_k1z & l_flags[F_CI_ONE] & l_flags[F_CO_TI];
+      end else begin
+        lastk_q <= lastk_s;
+        xf_q <= xf_s;
+      end
     end
   end
 
@@ -375,6 +420,7 @@ module interp_dp #(
       assert(ti2_q == (arc_q ? ti_f + 2'd2 : ti_f - 2'd2));
       assert(tim1_q == ti_f - 1'b1);
       assert(to_z_q == (to_f == 0) && to_one_q == (to_f == 1));
+      assert(xing_q == (~kz_q & ci_one_q));
       assert(k_q <= 3'd4);
       assert(kz_q == (k_q == 3'd0));
       assert(done_q == (kz_q & in_ex_q & out_ex_q));

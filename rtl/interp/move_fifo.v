@@ -40,7 +40,12 @@ module move_fifo #(
   assign o_level = {1'b0, used} + {{(AW+1){1'b0}}, o_valid};
 
   wire wr = i_push;
-  wire rd = ~mem_empty & (~o_valid | i_pop);
+  // rd = ~empty & (~o_valid | i_pop): the pop (the caller's load decision)
+  // is the late input, so it comes one LUT before rd; the other terms are
+  // from flip-flops alone, kept apart (LUT boundaries for abc).
+  (* keep *) wire rd_ne = ~mem_empty;
+  (* keep *) wire rd_idle = ~mem_empty & ~o_valid;
+  wire rd = rd_idle | (rd_ne & i_pop);
 
   // Memory write port.
   always @(posedge i_clk) begin
@@ -64,11 +69,12 @@ module move_fifo #(
     else if (rd) rptr_q <= rptr_q + 1'b1;
   end
 
-  // Head valid.
+  // Head valid: after a read, or kept when not popped (a read follows a
+  // pop whenever the memory holds a block). No clock enable: the pop is one
+  // LUT from the flip-flop.
   always @(posedge i_clk) begin
     if (i_rst | i_flush) o_valid <= 1'b0;
-    else if (rd) o_valid <= 1'b1;
-    else if (i_pop) o_valid <= 1'b0;
+    else o_valid <= rd_ne | (o_valid & ~i_pop);
   end
 
 endmodule

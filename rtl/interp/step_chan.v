@@ -12,6 +12,10 @@
 // the rising edge, space and hold at the falling edge, setup at the DIR
 // change) and counting to 0; an interval of n clocks has passed when the
 // counter, loaded with n in the first clock of the interval, is <= 1.
+// That test is a registered flag beside each counter (formed from the value
+// loaded, or from "<= 2" before a count), so no counter's compare sits in
+// the STEP/DIR decisions; a counter stops once its flag is set (only the
+// flag is read, and <= 1 stays <= 1).
 `default_nettype none
 
 module step_chan #(
@@ -37,10 +41,15 @@ module step_chan #(
   reg [TW-1:0] hld_q;  // clocks before DIR may change, this one included
   reg [TW-1:0] set_q;  // clocks before STEP may rise after DIR, this one included
 
-  wire high_last = (high_q[TW-1:1] == 0);
-  wire space_ok = (spc_q[TW-1:1] == 0);
-  wire hold_ok = (hld_q[TW-1:1] == 0);
-  wire setup_ok = (set_q[TW-1:1] == 0);
+  // The flags: the counter beside each is <= 1.
+  reg high_last, space_ok, hold_ok, setup_ok;
+  // v <= 1 (given v's bits above bit 0), v <= 2.
+  function automatic le1(input [TW-2:0] v_hi);
+    le1 = (v_hi == 0);
+  endfunction
+  function automatic le2(input [TW-1:0] v);
+    le2 = (v[TW-1:2] == 0) & ~(v[1] & v[0]);
+  endfunction
   wire change_dir = pend_q & ~o_step & (o_dir != want_q) & hold_ok;
   wire rise = pend_q & ~o_step & (o_dir == want_q) & space_ok & setup_ok;
   wire fall = o_step & high_last;
@@ -69,23 +78,44 @@ module step_chan #(
 
   // High time left.
   always @(posedge i_clk) begin
-    if (i_rst) high_q <= {TW{1'b0}};
-    else if (rise) high_q <= i_len;
-    else if (o_step && high_q != 0) high_q <= high_q - 1'b1;
+    if (i_rst) begin
+      high_q <= {TW{1'b0}};
+      high_last <= 1'b1;
+    end else if (rise) begin
+      high_q <= i_len;
+      high_last <= le1(i_len[TW-1:1]);
+    end else if (o_step & ~high_last) begin
+      high_q <= high_q - 1'b1;
+      high_last <= le2(high_q);
+    end
   end
 
   // Low time still required.
   always @(posedge i_clk) begin
-    if (i_rst) spc_q <= {TW{1'b0}};
-    else if (fall) spc_q <= i_space;
-    else if (spc_q != 0) spc_q <= spc_q - 1'b1;
+    if (i_rst) begin
+      spc_q <= {TW{1'b0}};
+      space_ok <= 1'b1;
+    end else if (fall) begin
+      spc_q <= i_space;
+      space_ok <= le1(i_space[TW-1:1]);
+    end else if (~space_ok) begin
+      spc_q <= spc_q - 1'b1;
+      space_ok <= le2(spc_q);
+    end
   end
 
   // Hold time still required.
   always @(posedge i_clk) begin
-    if (i_rst) hld_q <= {TW{1'b0}};
-    else if (fall) hld_q <= i_hold;
-    else if (hld_q != 0) hld_q <= hld_q - 1'b1;
+    if (i_rst) begin
+      hld_q <= {TW{1'b0}};
+      hold_ok <= 1'b1;
+    end else if (fall) begin
+      hld_q <= i_hold;
+      hold_ok <= le1(i_hold[TW-1:1]);
+    end else if (~hold_ok) begin
+      hld_q <= hld_q - 1'b1;
+      hold_ok <= le2(hld_q);
+    end
   end
 
   // DIR and the setup time still required.
@@ -93,11 +123,14 @@ module step_chan #(
     if (i_rst) begin
       o_dir <= 1'b0;
       set_q <= {TW{1'b0}};
+      setup_ok <= 1'b1;
     end else if (change_dir) begin
       o_dir <= want_q;
       set_q <= i_setup;
-    end else if (set_q != 0) begin
+      setup_ok <= le1(i_setup[TW-1:1]);
+    end else if (~setup_ok) begin
       set_q <= set_q - 1'b1;
+      setup_ok <= le2(set_q);
     end
   end
 

@@ -63,10 +63,17 @@ module step_out #(
     else if (overrun) o_overrun <= 1'b1;
   end
 
-  // Overrun count, saturating.
+  // Overrun count, saturating: ovr_sat_q is "the count is all ones", a
+  // register, so the 32-bit compare is not in the count's enable.
+  reg ovr_sat_q;
   always @(posedge i_clk) begin
-    if (i_rst | i_clear) o_ovr_count <= 32'd0;
-    else if (overrun && o_ovr_count != 32'hFFFF_FFFF) o_ovr_count <= o_ovr_count + 1'b1;
+    if (i_rst | i_clear) begin
+      o_ovr_count <= 32'd0;
+      ovr_sat_q <= 1'b0;
+    end else if (overrun & ~ovr_sat_q) begin
+      o_ovr_count <= o_ovr_count + 1'b1;
+      ovr_sat_q <= (o_ovr_count == 32'hFFFF_FFFE);
+    end
   end
 
 endmodule
