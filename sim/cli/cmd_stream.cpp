@@ -99,7 +99,7 @@ std::vector<board::Chord3> plan_chords(const std::string& file, const planner::C
 }
 
 // At most every 0.1 s, and at the end.
-void show_progress(const board::Progress& p, double spm, bool tty) {
+void show_progress(const board::Progress& p, double spm, bool tty, const char* unit) {
   static std::size_t last = static_cast<std::size_t>(-1);
   static auto shown = std::chrono::steady_clock::time_point{};
   const auto now = std::chrono::steady_clock::now();
@@ -108,9 +108,9 @@ void show_progress(const board::Progress& p, double spm, bool tty) {
   last = p.sent;
   shown = now;
   const int w = 30, done = static_cast<int>(w * p.sent / p.total);
-  std::fprintf(stderr, "\r[%.*s%.*s] %3zu%% %zu/%zu chords  X %9.3f Y %9.3f Z %9.3f mm  queue %3u", done,
+  std::fprintf(stderr, "\r[%.*s%.*s] %3zu%% %zu/%zu %s  X %9.3f Y %9.3f Z %9.3f mm  queue %3u", done,
                "##############################", w - done, "                              ",
-               100 * p.sent / p.total, p.sent, p.total, p.pos[0] / spm, p.pos[1] / spm, p.pos[2] / spm, p.level);
+               100 * p.sent / p.total, p.sent, p.total, unit, p.pos[0] / spm, p.pos[1] / spm, p.pos[2] / spm, p.level);
   if (!tty) std::fputs("\n", stderr);
 }
 
@@ -149,7 +149,7 @@ int run_hw_arcs(const Args& a, const std::string& port, unsigned baud, const pla
     std::signal(SIGINT, on_sigint);
     const bool tty = isatty(STDERR_FILENO), bar = a.flag("progress") || (!a.flag("quiet") && tty);
     auto progress = [&](const board::Progress& p) {
-      if (bar) show_progress(p, spm, tty);
+      if (bar) show_progress(p, spm, tty, "blocks");
     };
     const auto r = board::stream_blocks(link, sp, prog, sc, progress, &g_stop);
     if (bar && tty) std::fputs("\n", stderr);
@@ -205,7 +205,7 @@ int run_stream(const std::vector<std::string>& argv) {
     std::signal(SIGINT, on_sigint);
     const bool tty = isatty(STDERR_FILENO), bar = a.flag("progress") || (!a.flag("quiet") && tty);
     auto progress = [&](const board::Progress& p) {
-      if (bar) show_progress(p, spm, tty);
+      if (bar) show_progress(p, spm, tty, "chords");
     };
     const auto r = board::stream_chords(link, sp, chords, sc, progress, &g_stop);
     if (bar && tty) std::fputs("\n", stderr);

@@ -19,6 +19,7 @@ sim=$!
 trap 'kill $sim 2>/dev/null || true; [ -z "${host:-}" ] || kill $host 2>/dev/null || true' EXIT
 for _ in $(seq 200); do [ -s "$work/port" ] && break; sleep 0.05; done
 [ -s "$work/port" ] || { echo "board-sim printed no port"; exit 1; }
+: >"$work/progress.log"  # the loop below may read it before the background stream opens it
 "$contour" stream "$prog" --port "$(cat "$work/port")" --progress --timeout 60 >"$work/stream.log" 2>"$work/progress.log" &
 host=$!
 sent=0
