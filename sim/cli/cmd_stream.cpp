@@ -114,9 +114,9 @@ void show_progress(const board::Progress& p, double spm, bool tty, const char* u
   if (!tty) std::fputs("\n", stderr);
 }
 
+// The end of a run in either mode, after its first line: the link's figures,
+// the position read back against the program's; the exit status.
 int report(const board::StreamResult& r, std::size_t n) {
-  std::printf("stream: %u of %zu chords run, underruns %u, watchdog trips %u%s\n", r.chords, n, r.underruns,
-              r.wdog_trips, r.stopped ? ", STOPPED by Ctrl-C" : "");
   std::printf("stream: link %llu frames, %llu resends, %llu refused, %llu bad replies\n",
               static_cast<unsigned long long>(r.link.frames), static_cast<unsigned long long>(r.link.resends),
               static_cast<unsigned long long>(r.link.refused), static_cast<unsigned long long>(r.link.bad_replies));
@@ -126,6 +126,29 @@ int report(const board::StreamResult& r, std::size_t n) {
               static_cast<long long>(r.expected[2]));
   if (r.stopped) return 130;
   return (r.end == r.expected && r.chords == n) ? 0 : 1;
+}
+
+// What both modes share: the port, the link, Ctrl-C and the progress line
+// (counting `unit`); `stream(link, port, progress)` runs the mode.
+template <class Stream>
+board::StreamResult on_board(const Args& a, const std::string& port, unsigned baud, double spm,
+                             const board::LinkTimes& lt, const char* unit, Stream stream) {
+  try {
+    board::SerialPort sp(port, baud, lt.dead_s);
+    board::LinkClient link(sp, lt);
+    std::signal(SIGINT, on_sigint);
+    const bool tty = isatty(STDERR_FILENO), bar = a.flag("progress") || (!a.flag("quiet") && tty);
+    auto progress = [&](const board::Progress& p) {
+      if (bar) show_progress(p, spm, tty, unit);
+    };
+    const board::StreamResult r = stream(link, sp, progress);
+    if (bar && tty) std::fputs("\n", stderr);
+    return r;
+  } catch (const board::LinkError& e) {
+    throw UsageError(port + ": " + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(a.positional()[0] + ": " + e.what());
+  }
 }
 
 // --hw-arcs: paper A's blocks (tb/board/stream_blocks.hpp).
@@ -143,30 +166,12 @@ int run_hw_arcs(const Args& a, const std::string& port, unsigned baud, const pla
     for (const auto& b : prog.blocks) out << b.args() << " # line " << b.line << "\n";
     if (!out) throw UsageError("--blocks: cannot write '" + *path + "'");
   }
-  try {
-    board::SerialPort sp(port, baud, lt.dead_s);
-    board::LinkClient link(sp, lt);
-    std::signal(SIGINT, on_sigint);
-    const bool tty = isatty(STDERR_FILENO), bar = a.flag("progress") || (!a.flag("quiet") && tty);
-    auto progress = [&](const board::Progress& p) {
-      if (bar) show_progress(p, spm, tty, "blocks");
-    };
-    const auto r = board::stream_blocks(link, sp, prog, sc, progress, &g_stop);
-    if (bar && tty) std::fputs("\n", stderr);
-    std::printf("stream: %u of %zu blocks run (paper A, --hw-arcs), watchdog trips %u%s\n", r.chords,
-                prog.blocks.size(), r.wdog_trips, r.stopped ? ", STOPPED by Ctrl-C" : "");
-    std::printf("stream: link %llu frames, %llu resends, %llu refused, %llu bad replies\n",
-                static_cast<unsigned long long>(r.link.frames), static_cast<unsigned long long>(r.link.resends),
-                static_cast<unsigned long long>(r.link.refused), static_cast<unsigned long long>(r.link.bad_replies));
-    std::printf("stream: position %lld %lld %lld steps (program: %lld %lld %lld)\n", static_cast<long long>(r.end[0]),
-                static_cast<long long>(r.end[1]), static_cast<long long>(r.end[2]),
-                static_cast<long long>(r.expected[0]), static_cast<long long>(r.expected[1]),
-                static_cast<long long>(r.expected[2]));
-    if (r.stopped) return 130;
-    return (r.end == r.expected && r.chords == prog.blocks.size()) ? 0 : 1;
-  } catch (const board::LinkError& e) {
-    throw UsageError(port + ": " + e.what());
-  }
+  const auto r = on_board(a, port, baud, spm, lt, "blocks", [&](auto& link, auto& sp, const auto& progress) {
+    return board::stream_blocks(link, sp, prog, sc, progress, &g_stop);
+  });
+  std::printf("stream: %u of %zu blocks run (paper A, --hw-arcs), watchdog trips %u%s\n", r.chords,
+              prog.blocks.size(), r.wdog_trips, r.stopped ? ", STOPPED by Ctrl-C" : "");
+  return report(r, prog.blocks.size());
 }
 
 int run_stream(const std::vector<std::string>& argv) {
@@ -199,22 +204,12 @@ int run_stream(const std::vector<std::string>& argv) {
   lt.dead_s = positive(a, "timeout", "3");
   if (a.flag("hw-arcs")) return run_hw_arcs(a, *port, baud, pc, spm, sc, lt);
   const auto chords = plan_chords(a.positional()[0], pc, spm);
-  try {
-    board::SerialPort sp(*port, baud, lt.dead_s);
-    board::LinkClient link(sp, lt);
-    std::signal(SIGINT, on_sigint);
-    const bool tty = isatty(STDERR_FILENO), bar = a.flag("progress") || (!a.flag("quiet") && tty);
-    auto progress = [&](const board::Progress& p) {
-      if (bar) show_progress(p, spm, tty, "chords");
-    };
-    const auto r = board::stream_chords(link, sp, chords, sc, progress, &g_stop);
-    if (bar && tty) std::fputs("\n", stderr);
-    return report(r, chords.size());
-  } catch (const board::LinkError& e) {
-    throw UsageError(*port + ": " + e.what());
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(a.positional()[0] + ": " + e.what());
-  }
+  const auto r = on_board(a, *port, baud, spm, lt, "chords", [&](auto& link, auto& sp, const auto& progress) {
+    return board::stream_chords(link, sp, chords, sc, progress, &g_stop);
+  });
+  std::printf("stream: %u of %zu chords run, underruns %u, watchdog trips %u%s\n", r.chords, chords.size(),
+              r.underruns, r.wdog_trips, r.stopped ? ", STOPPED by Ctrl-C" : "");
+  return report(r, chords.size());
 }
 
 const CommandRegistrar kRegistrar{
