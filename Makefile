@@ -7,7 +7,7 @@
 #   make synth   yosys + nextpnr-ice40: LCs, BRAMs, Fmax over seeds 1-5 (SEEDS=...) on HX8K and UP5K
 #   make lint    verilator --lint-only -Wall over rtl/ (every core's file list)
 #   make formal  the formal proofs and their mutants (ctest -L formal)
-#   make mutants planted bugs in model, RTL, 8085 program: each must be KILLED
+#   make mutants planted bugs in model, RTL, 8085 program, board and host: each must be KILLED
 #   make coverage line and toggle coverage of the interp_core regression
 #   make install PREFIX=DIR  contour and contour-cosim into DIR/bin (default /usr/local)
 #   make docs-plots  regenerate every plot committed under docs/
@@ -18,6 +18,8 @@
 # is installed.
 
 BUILD   ?= build
+# cmake's generated makefiles run make recursively: no "Entering directory" lines
+MAKEFLAGS += --no-print-directory
 JOBS    ?= 2
 CMAKE   ?= cmake
 CTEST_ARGS ?=
