@@ -135,13 +135,24 @@ Reply LinkClient::transact(const std::vector<Op>& ops) {
         auto r = (f && !dec_.last_bad()) ? parse_reply(*f) : std::nullopt;
         if (f && !r) ++stats_.bad_replies;
         if (!r || r->seq != seq) continue;
-        if (auto done = transact_reply(*r, seq, writes, reads)) return *done;
+        if (auto done = transact_reply(*r, seq, writes, reads))
+          return done->status == BOARD_ERR_DUP && reads != 0 ? transact(reads_of(ops)) : *done;
         again = true;  // refused (CRC): send again
       }
       check_dead();
     }
     ++stats_.resends;
   }
+}
+
+// The read ops of a frame, in order: sent alone when the frame's writes
+// were done but its reply, with the reads' data, was lost (a DUP reply
+// carries no data).
+std::vector<Op> LinkClient::reads_of(const std::vector<Op>& ops) {
+  std::vector<Op> r;
+  for (const Op& op : ops)
+    if (!op.write) r.push_back(op);
+  return r;
 }
 
 // The reply to transact's frame: the reply if it is done, nothing if it

@@ -51,7 +51,10 @@ class LinkClient {
 
   // Learns the board's expected sequence number (a read of `word`).
   void sync(std::uint8_t word);
-  // Sends one frame and waits for its reply (all earlier frames first).
+  // Sends one frame and waits for its reply (all earlier frames first). A
+  // frame with writes and reads whose reply was lost is answered DUP when
+  // sent again (done once, no data): its reads are then sent alone, and
+  // their reply is returned.
   Reply transact(const std::vector<Op>& ops);
   // Pipelined: sends a frame with writes (it must have one) now.
   void post(const std::vector<Op>& ops, std::size_t chords);
@@ -80,6 +83,7 @@ class LinkClient {
   void go_back();
   void handle(const Reply& r);
   void check_dead();
+  static std::vector<Op> reads_of(const std::vector<Op>& ops);
   std::optional<Reply> transact_reply(const Reply& r, std::uint8_t seq, bool writes, std::size_t reads);
   static bool before(std::uint8_t a, std::uint8_t b) { return static_cast<std::int8_t>(a - b) < 0; }
 

@@ -19,6 +19,7 @@ class ScriptedBoard : public Transport {
  public:
   std::deque<std::uint8_t> script;  // statuses for the next requests
   bool silent = false;
+  unsigned drop_replies = 0;  // this many replies lost on the wire (the request done)
   std::vector<std::uint32_t> done;  // the data of each write done, in order
   double latency_s = 0.001;
 
@@ -72,6 +73,10 @@ class ScriptedBoard : public Transport {
     const std::uint16_t c = crc16(r.data(), r.size());
     r.push_back(static_cast<std::uint8_t>(c >> 8));
     r.push_back(static_cast<std::uint8_t>(c));
+    if (drop_replies != 0) {
+      --drop_replies;
+      return;
+    }
     pending_.push_back({clock_ + latency_s, slip_encode(r)});
   }
 
@@ -106,6 +111,19 @@ TEST(LinkClient, OneLostFrameInAWindowIsResentWithOneGoBack) {
   EXPECT_EQ(b.done, (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5, 6, 7}));
   EXPECT_EQ(link.stats().go_backs, 1u);
   EXPECT_EQ(link.stats().resends, 7u);
+}
+
+// A write and a read in one frame, its reply lost: sent again, the board
+// answers DUP (done once, no data); the read is sent alone and its data
+// returned.
+TEST(LinkClient, AFrameOfWritesAndReadsWhoseReplyWasLostGetsItsReadsAgain) {
+  ScriptedBoard b;
+  b.drop_replies = 1;
+  LinkClient link(b);
+  const Reply r = link.transact({wr(7), Op{false, BOARD_AXIS3_STATUS, 0}});
+  EXPECT_EQ(r.status, BOARD_ERR_OK);
+  EXPECT_EQ(r.data.size(), 1u);
+  EXPECT_EQ(b.done, (std::vector<std::uint32_t>{7}));
 }
 
 TEST(LinkClient, PipelinedFramesRefusedAreSentAgainInOrder) {
