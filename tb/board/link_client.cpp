@@ -27,13 +27,14 @@ std::size_t LinkClient::chords_in_flight() const {
 }
 
 void LinkClient::send(Frame& f) {
+  f.gen = gen_;
   f.sent_at = t_.now_s();
   t_.write(f.bytes);
   ++stats_.frames;
 }
 
 void LinkClient::go_back() {
-  if (!out_.empty()) went_back_at_ = out_.front().seq;
+  ++gen_;
   ++stats_.go_backs;
   for (Frame& f : out_) {
     send(f);
@@ -60,8 +61,7 @@ void LinkClient::refuse_len(const Reply& r, std::uint8_t seq) {
 }
 
 // A valid reply: everything before the board's next expected number is
-// done; a SEQ refusal starts a go-back, unless the board still expects the
-// frame the last go-back resent from (the refusal is of a copy sent before it).
+// done; a SEQ refusal of a frame sent since the last go-back starts another.
 void LinkClient::handle(const Reply& r) {
   last_valid_ = t_.now_s();
   last_ = r;
@@ -74,11 +74,14 @@ void LinkClient::handle(const Reply& r) {
   if (r.status == BOARD_ERR_LEN) refuse_len(r, r.seq);
   if (r.status == BOARD_ERR_OK) len_refusals_ = 0;
   if (r.status != BOARD_ERR_OK) ++stats_.refused;
+  bool stale = true;
   for (const Frame& f : out_)
-    if (f.seq == r.seq && r.status == BOARD_ERR_OK && f.reads != 0 && f.reads == r.data.size() && on_data) on_data(r);
+    if (f.seq == r.seq) {
+      stale = f.gen != gen_;
+      if (r.status == BOARD_ERR_OK && f.reads != 0 && f.reads == r.data.size() && on_data) on_data(r);
+    }
   while (!out_.empty() && before(out_.front().seq, r.next_seq)) out_.pop_front();
-  if (went_back_at_ && *went_back_at_ != r.next_seq) went_back_at_.reset();
-  if (r.status == BOARD_ERR_SEQ && !out_.empty() && !went_back_at_) go_back();
+  if (r.status == BOARD_ERR_SEQ && !out_.empty() && !stale) go_back();
 }
 
 void LinkClient::pump(double timeout_s) {

@@ -77,6 +77,7 @@ class LinkClient {
     std::uint8_t seq = 0;
     Bytes bytes;
     std::size_t reads = 0, chords = 0;
+    std::uint64_t gen = 0;
     double sent_at = 0;
   };
   void send(Frame& f);
@@ -92,10 +93,7 @@ class LinkClient {
   SlipDecoder dec_;
   std::deque<Frame> out_;
   std::uint8_t next_seq_ = 0;
-  // The board's expected number when the last go-back resent from it; the
-  // SEQ refusals of the copies sent before it say the same number and
-  // start no other go-back (a lost resend is sent again by the timeout).
-  std::optional<std::uint8_t> went_back_at_;
+  std::uint64_t gen_ = 0;
   double last_valid_ = 0;
   Reply last_;
   LinkStats stats_;

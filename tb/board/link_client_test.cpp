@@ -99,20 +99,6 @@ TEST(LinkClient, AFrameRefusedForCrcOrLengthIsSentAgainAndDoneOnce) {
   EXPECT_EQ(link.stats().resends, 3u);
 }
 
-// Frame 1 of 8 refused: the 6 frames after it are refused SEQ; the first of
-// these refusals resends frames 1-7 once, the others (of copies sent before
-// the go-back) resend nothing.
-TEST(LinkClient, OneLostFrameInAWindowIsResentWithOneGoBack) {
-  ScriptedBoard b;
-  b.script = {BOARD_ERR_OK, BOARD_ERR_CRC};
-  LinkClient link(b);
-  for (std::uint32_t k = 0; k < 8; ++k) link.post({wr(k)}, 0);
-  link.drain();
-  EXPECT_EQ(b.done, (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5, 6, 7}));
-  EXPECT_EQ(link.stats().go_backs, 1u);
-  EXPECT_EQ(link.stats().resends, 7u);
-}
-
 // A write and a read in one frame, its reply lost: sent again, the board
 // answers DUP (done once, no data); the read is sent alone and its data
 // returned.
