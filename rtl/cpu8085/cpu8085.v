@@ -101,12 +101,10 @@ module cpu8085 (
   reg         r75_latch_q, r75_prev_q, trap_latch_q, trap_prev_q;
   reg         rim_after_trap_q, ie_before_trap_q;
 
-  wire [ 7:0] reg_a = rf[R_A];
-  wire [ 7:0] reg_f = rf[R_F];
-  wire [15:0] bc = {rf[R_B], rf[R_C]};
-  wire [15:0] de = {rf[R_D], rf[R_E]};
-  wire [15:0] hl = {rf[R_H], rf[R_L]};
-  wire [15:0] wz = {w_q, z_q};
+  // Register pairs and A / F are written out at their uses (rf[R_A],
+  // {rf[R_H], rf[R_L]}, ...), not as wires: a Verilated model computes a
+  // wire read in several places at every clock, a use inside a clocked
+  // block's rare branch only when that branch runs.
 
   wire [2:0] ddd = ir_q[5:3];
   wire [2:0] sss = ir_q[2:0];
@@ -196,7 +194,7 @@ module cpu8085 (
   function cond_ir;
     input [2:0] ccc;
     begin
-      cond_ir = cond_of(ccc, {reg_f[7], reg_f[6], reg_f[2], reg_f[0]});
+      cond_ir = cond_of(ccc, {rf[R_F][7], rf[R_F][6], rf[R_F][2], rf[R_F][0]});
     end
   endfunction
 
@@ -335,9 +333,9 @@ module cpu8085 (
         D_H: dout_of = rf[R_H];
         D_PCH: dout_of = pc_q[15:8];
         D_PCL: dout_of = pc_q[7:0];
-        D_PUSH_HI: dout_of = (rp == 2'd3) ? reg_a : rf[{rp, 1'b0}];
-        D_PUSH_LO: dout_of = (rp == 2'd3) ? reg_f : rf[{rp, 1'b1}];
-        default: dout_of = reg_a;
+        D_PUSH_HI: dout_of = (rp == 2'd3) ? rf[R_A] : rf[{rp, 1'b0}];
+        D_PUSH_LO: dout_of = (rp == 2'd3) ? rf[R_F] : rf[{rp, 1'b1}];
+        default: dout_of = rf[R_A];
       endcase
     end
   endfunction
@@ -484,16 +482,22 @@ module cpu8085 (
       trap_latch_q <= 1'b0;
       r75_latch_q <= 1'b0;
     end else if (!i_dbg_load) begin
-      trap_prev_q <= i_trap;
-      r75_prev_q <= i_rst75;
-      trap_latch_q <= trap_latch_q | (i_trap & ~trap_prev_q);
-      r75_latch_q <= r75_latch_q | (i_rst75 & ~r75_prev_q);
+      // Only a change of a pin does anything here (rare: a Verilated
+      // model tests two bits per clock).
+      if (i_trap != trap_prev_q) begin
+        trap_prev_q <= i_trap;
+        if (i_trap) trap_latch_q <= 1'b1;
+      end
+      if (i_rst75 != r75_prev_q) begin
+        r75_prev_q <= i_rst75;
+        if (i_rst75) r75_latch_q <= 1'b1;
+      end
       if (unit_t1) begin
         irq = irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr);
         if (irq == IRQ_TRAP) trap_latch_q <= 1'b0;
         if (irq == IRQ_75) r75_latch_q <= 1'b0;
       end
-      if (end_of && is_sim && reg_a[4]) r75_latch_q <= 1'b0;
+      if (end_of && is_sim && rf[R_A][4]) r75_latch_q <= 1'b0;
     end
   end
 
@@ -522,12 +526,14 @@ module cpu8085 (
           rim_after_trap_q <= 1'b1;
         end
       end
-      if (end_of && (is_di || is_ei)) begin
-        ie_q <= is_ei;
-        ei_delay_q <= is_ei;
+      if (end_work) begin
+        if (end_of && (is_di || is_ei)) begin
+          ie_q <= is_ei;
+          ei_delay_q <= is_ei;
+        end
+        if (end_mc && is_hlt) halted_q <= 1'b1;
+        if (end_of && is_rim) rim_after_trap_q <= 1'b0;
       end
-      if (end_mc && is_hlt) halted_q <= 1'b1;
-      if (end_of && is_rim) rim_after_trap_q <= 1'b0;
     end
   end
 
@@ -537,8 +543,8 @@ module cpu8085 (
       masks_q <= 3'b111;
       sod_q <= 1'b0;
     end else if (!i_dbg_load && end_of && is_sim) begin
-      if (reg_a[3]) masks_q <= reg_a[2:0];
-      if (reg_a[6]) sod_q <= reg_a[7];
+      if (rf[R_A][3]) masks_q <= rf[R_A][2:0];
+      if (rf[R_A][6]) sod_q <= rf[R_A][7];
     end
   end
 
@@ -588,14 +594,14 @@ module cpu8085 (
   always @(posedge i_clk) begin
     if (i_rst) pc_q <= 16'h0000;
     else if (i_dbg_load) pc_q <= i_dbg_pc;
-    else begin
+    else if (op_load || end_work) begin
       if (op_load && kind == K_INSTR) pc_q <= pc_q + 16'd1;
-      if (end_of && is_pchl) pc_q <= hl;
+      if (end_of && is_pchl) pc_q <= {rf[R_H], rf[R_L]};
       if (end_mc) begin
         if (cyc_q == CY_MR && asel_q == A_PC) pc_q <= pc_q + 16'd1;
         if (mc_1 && (is_jcc | is_ccc) && !cond_ir(ddd) && !intr_mode) pc_q <= pc_q + 16'd2;
         if (mc_2 && (is_jcc | is_jmp | is_rcc | is_ret)) pc_q <= {i_din, z_q};
-        if (mc_4 && (is_ccc | is_call)) pc_q <= wz;
+        if (mc_4 && (is_ccc | is_call)) pc_q <= {w_q, z_q};
         if (mc_2 && is_rst) pc_q <= (kind == K_IACK) ? vec_q : {10'b0, ddd, 3'b000};
       end
     end
@@ -606,9 +612,9 @@ module cpu8085 (
   always @(posedge i_clk) begin
     if (i_rst) sp_q <= 16'h0000;
     else if (i_dbg_load) sp_q <= i_dbg_sp;
-    else begin
+    else if (end_work) begin
       if (end_of && (is_push | is_rst)) sp_q <= sp_q - 16'd1;
-      if (end_of && is_sphl) sp_q <= hl;
+      if (end_of && is_sphl) sp_q <= {rf[R_H], rf[R_L]};
       if (end_of && is_inx && rp == 2'd3) sp_q <= sp_q + 16'd1;
       if (end_of && is_dcx && rp == 2'd3) sp_q <= sp_q - 16'd1;
       if (end_mc) begin
@@ -649,9 +655,9 @@ module cpu8085 (
       // The ALU's register operand: DDD for INR / DCR, SSS otherwise (6:
       // M, the byte read).
       alu_src = (ir_q[7:6] == 2'b00) ? ddd : sss;
-      alu_v = alu_ir(ir_q, (alu_src == 3'd6) ? i_din : rf[alu_src], reg_a, reg_f);
-      pair_v = (rp == 2'd0) ? bc : (rp == 2'd1) ? de : hl;  // rp 3 (SP): not here
-      dad_sum = {1'b0, hl} + {1'b0, (rp == 2'd3) ? sp_q : pair_v};
+      alu_v = alu_ir(ir_q, (alu_src == 3'd6) ? i_din : rf[alu_src], rf[R_A], rf[R_F]);
+      pair_v = (rp == 2'd0) ? {rf[R_B], rf[R_C]} : (rp == 2'd1) ? {rf[R_D], rf[R_E]} : {rf[R_H], rf[R_L]};  // rp 3 (SP): not here
+      dad_sum = {1'b0, {rf[R_H], rf[R_L]}} + {1'b0, (rp == 2'd3) ? sp_q : pair_v};
       {rf_we, rf_wa, rf_wd} = {1'b0, R_A, alu_v[15:8]};
       {pair_we, pair_wa, pair_wd} = {1'b0, rp, i_din, z_q};
       {f_we, f_wd} = {1'b0, alu_v[7:0]};
@@ -675,16 +681,16 @@ module cpu8085 (
         if (is_pop && mc_2 && rp == 2'd3) {rf_we, rf_wd} = {1'b1, i_din};
         if (mc_2 && rp != 2'd3 && (is_lxi || is_pop)) pair_we = 1'b1;
         if (mc_2 && is_dad) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, dad_sum[15:0]};
-        if (mc_4 && is_xthl) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, wz};
+        if (mc_4 && is_xthl) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, {w_q, z_q}};
         if (is_alu_m | is_alu_i | (is_incdec_m & mc_1)) f_we = 1'b1;
-        if (is_dad && mc_2) {f_we, f_wd} = {1'b1, reg_f[7:1], dad_sum[16]};
+        if (is_dad && mc_2) {f_we, f_wd} = {1'b1, rf[R_F][7:1], dad_sum[16]};
         if (is_pop && mc_2 && rp == 2'd3) {f_we, f_wd} = {1'b1, z_q & 8'hD5};
         if (mc_1 && (is_mvi_m | is_lxi | is_direct | is_pop_ret | is_jcc | is_jmp |
                      (is_out | is_in) | is_xthl | (is_ccc | is_call)))
           z_q <= i_din;
         if (mc_1 && is_incdec_m) z_q <= alu_v[15:8];
         if (mc_2 && (is_direct | is_xthl | (is_ccc | is_call))) w_q <= i_din;
-        if (mc_3 && is_direct && !ir_q[4]) {w_q, z_q} <= wz + 16'd1;
+        if (mc_3 && is_direct && !ir_q[4]) {w_q, z_q} <= {w_q, z_q} + 16'd1;
       end
 `ifdef FORMAL
       // The byte and pair write ports never address F (index 6, pair 3).
