@@ -134,7 +134,9 @@ TEST(BoardBlocks, ArcsEndOnTheRoundedEndPoint) {
     const BlockProgram p = to_blocks(planner::plan(g, planner::Config{}), kSpm);
     ASSERT_FALSE(p.blocks.empty()) << text;
     const HwBlock& b = p.blocks.back();
-    if (p.blocks.size() == 2) EXPECT_EQ(b.x0, p.blocks[0].end_x()) << text;
+    if (p.blocks.size() == 2) {
+      EXPECT_EQ(b.x0, p.blocks[0].end_x()) << text;
+    }
     if (!b.arc) {
       ++as_line;
       continue;
@@ -303,9 +305,7 @@ TEST(BoardBlocks, WatchdogStopsAlongThePathAndResumes) {
   const Outcome o = run_blocks(p, f);
   expect_model_pulses(o, p);
   EXPECT_GE(o.res.wdog_trips, 1u);
-  std::size_t g = 1;
-  for (std::size_t i = 1; i < o.steps.size(); ++i)
-    if (o.steps[i].clock - o.steps[i - 1].clock > o.steps[g].clock - o.steps[g - 1].clock) g = i;
+  const std::size_t g = after_longest_gap(o.steps);
   const double stop = static_cast<double>(o.steps[g - 1].clock) / kClockHz;
   const double go = static_cast<double>(o.steps[g].clock) / kClockHz;
   EXPECT_GT(go - stop, 0.05);

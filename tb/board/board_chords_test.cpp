@@ -152,9 +152,7 @@ TEST(BoardChords, WatchdogStopsAlongThePathAndResumes) {
   expect_model_pulses(o, chords);
   EXPECT_GE(o.res.wdog_trips, 1u);
   // The stop: the longest gap between steps is where the motion stood still.
-  std::size_t g = 1;
-  for (std::size_t i = 1; i < o.steps.size(); ++i)
-    if (o.steps[i].clock - o.steps[i - 1].clock > o.steps[g].clock - o.steps[g - 1].clock) g = i;
+  const std::size_t g = after_longest_gap(o.steps);
   const double stop = static_cast<double>(o.steps[g - 1].clock) / kClockHz;
   const double go = static_cast<double>(o.steps[g].clock) / kClockHz;
   EXPECT_GT(go - stop, 0.05);

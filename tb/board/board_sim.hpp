@@ -37,6 +37,15 @@ struct Faults {
   double cut_for_s = 0;           // ... for this long
 };
 
+// The index of the step after the longest gap between two steps (where a
+// hold brought the motion to rest); at least 1.
+inline std::size_t after_longest_gap(const std::vector<StepEvent>& s) {
+  std::size_t g = 1;
+  for (std::size_t i = 1; i < s.size(); ++i)
+    if (s[i].clock - s[i - 1].clock > s[g].clock - s[g - 1].clock) g = i;
+  return g;
+}
+
 // The net steps per axis (X, Y, Z) the pins gave at clocks before `clock`.
 std::array<std::int64_t, 3> pins_net(const std::vector<StepEvent>& steps, std::uint64_t clock = UINT64_MAX);
 // Whether axis `a`'s net equals `v` at some clock in [c0, c1] (a reply's
