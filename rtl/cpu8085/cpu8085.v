@@ -155,16 +155,23 @@ module cpu8085 (
   // The opcode decoded into one-hot classes (cpu8085_decode.vh), registered
   // with the instruction register: once per instruction.
 `include "cpu8085_decode.vh"
-  reg is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i;
-  reg is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc;
-  reg is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct;
-  reg is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp;
-  reg is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei;
-  reg is_ccc, is_call, is_push, is_rst;
+  reg [39:0] cls_q;  // decode()'s classes, in its order
+  wire is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i;
+  wire is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc;
+  wire is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct;
+  wire is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp;
+  wire is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei;
+  wire is_ccc, is_call, is_push, is_rst;
   // Classes that share their cycle list.
-  reg is_mem_rmw;  // MVI M, INR / DCR M: MR (or operand) then MW (HL)
-  reg is_pop_ret;  // Rcc RET POP: two reads at SP
-  // Classes that share their cycle list.
+  wire is_mem_rmw;  // MVI M, INR / DCR M: MR (or operand) then MW (HL)
+  wire is_pop_ret;  // Rcc RET POP: two reads at SP
+  assign {is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i,
+          is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc,
+          is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct,
+          is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp,
+          is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
+          is_ccc, is_call, is_push, is_rst,
+          is_mem_rmw, is_pop_ret} = cls_q;
   // Where the cycle index stands.
   wire mc_1 = (mc_q == 3'd1);
   wire mc_2 = (mc_q == 3'd2);
@@ -554,36 +561,18 @@ module cpu8085 (
     reg [2:0] irq;
     if (i_rst) begin
       ir_q <= 8'h00;
-      {is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i,
-       is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc,
-       is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct,
-       is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp,
-       is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
-       is_ccc, is_call, is_push, is_rst,
-       is_mem_rmw, is_pop_ret} <= decode(8'h00);
+      cls_q <= decode(8'h00);
     end else if (!i_dbg_load) begin
       if (unit_t1) begin
         irq = irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr);
         if (irq != IRQ_NONE && irq != IRQ_INTR) begin
           ir_q <= 8'hFF;
-          {is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i,
-           is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc,
-           is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct,
-           is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp,
-           is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
-           is_ccc, is_call, is_push, is_rst,
-       is_mem_rmw, is_pop_ret} <= decode(8'hFF);
+          cls_q <= decode(8'hFF);
         end
       end
       if (op_load) begin
         ir_q <= i_din;
-        {is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i,
-         is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc,
-         is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct,
-         is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp,
-         is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
-         is_ccc, is_call, is_push, is_rst,
-       is_mem_rmw, is_pop_ret} <= decode(i_din);
+        cls_q <= decode(i_din);
       end
     end
   end
@@ -726,14 +715,7 @@ module cpu8085 (
     if (i_dbg_load) assume (unit_t1);
   end
   // The registered classes.
-  wire [39:0] classes = {
-    is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i,
-    is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc,
-    is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct,
-    is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp,
-    is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
-    is_ccc, is_call, is_push, is_rst,
-    is_mem_rmw, is_pop_ret};
+  wire [39:0] classes = cls_q;
   // The 39 classes of decode_all (NOP included) are one-hot.
   function f_onehot;
     input [42:0] all;
