@@ -651,7 +651,7 @@ void BoardCosimEngine::queue_next() {
   const std::uint8_t base = sw8085::kSlots[next_slot_];
   std::array<std::uint8_t, 256> img{};
   auto sm = sw8085::encode(moves_[next_move_].move, base, *codes_, std::span<std::uint8_t, 256>(img));
-  const int lo = base - 4, hi = base + sw8085::kStatus;  // the slot spans base-4 .. base+0x3B
+  const int lo = base + sw8085::kSlotLow, hi = base + sw8085::kStatus;  // the slot
   for (int a = 0; a < 256; ++a)
     if (img[a] != 0 && (a < lo || a > hi))
       throw std::logic_error("cpu: sw8085::encode wrote outside its slot at " + std::to_string(a));

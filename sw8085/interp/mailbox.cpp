@@ -27,12 +27,6 @@ std::array<std::uint8_t, 3> to_counter(std::int64_t v) {
           static_cast<std::uint8_t>((w >> 16) + 1)};
 }
 
-std::int64_t from_counter(const std::array<std::uint8_t, 3>& c) {
-  if (c[0] == 0 && c[1] == 0 && c[2] == 0) return 0;
-  auto d = [](std::uint8_t b) { return std::int64_t{b == 0 ? 256 : b}; };
-  return d(c[0]) + 256 * (d(c[1]) - 1) + 65536 * (d(c[2]) - 1);
-}
-
 std::uint8_t need(const std::map<std::string, std::uint16_t>& s, const char* name) {
   const auto it = s.find(name);
   if (it == s.end()) throw std::runtime_error(std::string("interp.lst: symbol ") + name + " is missing");
@@ -46,8 +40,6 @@ std::int64_t abs64(std::int64_t v) { return v < 0 ? -v : v; }
 Codes Codes::from_symbols(const std::map<std::string, std::uint16_t>& s) {
   Codes c;
   c.idle = need(s, "C_IDLE");
-  c.lyo = need(s, "C_LYO");
-  c.lxo = need(s, "C_LXO");
   struct Family {
     const char* name;
     bool neg, done;
@@ -98,19 +90,29 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
     sm.sy = m.ye < 0 ? -1 : +1;
     // P: the axis stepped when D >= 0 and the last one stepped (X iff
     // |YE| < |XE|: the walk reaches (A - 1, B) then, else (A, B - 1)).
-    sm.swapped = a > 0 && b >= a;
-    const bool swap = sm.swapped;
-    const std::int64_t p = swap ? b : a, q = swap ? a : b;
-    mb[at(base, kMode)] = a == 0 ? codes.lyo : b == 0 ? codes.lxo : swap ? line::kModeNeg : line::kModeNonNeg;
-    put24(mb, at(base, line::kD), swap ? 0xFFFFFF : 0);  // D = 0; swapped: -D - 1 = -1
-    const auto rp = to_counter(a == 0 ? 0 : p), ry = to_counter(a == 0 ? b : 0);
-    for (int i = 0; i < 3; ++i) {
-      mb[at(base, line::kRx[i])] = rp[i];
-      mb[at(base, line::kRy[i])] = ry[i];
-    }
-    mb[at(base, line::kPatX)] = swap ? pattern(Axis::Y, sm.sy) : pattern(Axis::X, sm.sx);
-    mb[at(base, line::kPatY)] = swap ? pattern(Axis::X, sm.sx) : pattern(Axis::Y, sm.sy);
-    put24(mb, at(base, line::kNegB), static_cast<std::uint32_t>(-q & 0xFFFFFF));
+    sm.swapped = a > 0 && b > 0 && b >= a;
+    const bool swap = sm.swapped, one = a == 0 || b == 0;
+    // One axis: P and Q are the same axis, |P| = |Q| = 1, D = 0 / -1 with
+    // P stepping from D = 0: P's steps are every other pulse, the last one
+    // P's, so a line of n pulses starts from D = -1 if n is even.
+    const std::int64_t n = a + b;
+    const std::int64_t p = one ? 1 : swap ? b : a, q = one ? 1 : swap ? a : b;
+    const std::int64_t psteps = one ? (n + 1) / 2 : p;
+    const bool start_neg = one ? n % 2 == 0 : swap;
+    mb[at(base, kMode)] = start_neg ? line::kModeNeg : line::kModeNonNeg;
+    put24(mb, at(base, line::kD), start_neg ? 0xFFFFFF : 0);  // D = 0; swapped: -D - 1 = -1
+    const std::int64_t blocks = (psteps - 1) >> 16, rest = psteps - 65536 * blocks;
+    mb[at(base, line::kC[0])] = static_cast<std::uint8_t>(((rest - 1) & 0xFF) + 1);
+    mb[at(base, line::kC[1])] = static_cast<std::uint8_t>(((rest - 1) >> 8) + 1);
+    mb[at(base, line::kC[2])] = static_cast<std::uint8_t>(blocks);
+    const std::uint8_t pp = one ? (a == 0 ? pattern(Axis::Y, sm.sy) : pattern(Axis::X, sm.sx))
+                                : swap ? pattern(Axis::Y, sm.sy) : pattern(Axis::X, sm.sx);
+    mb[at(base, line::kPatP)] = pp;
+    mb[at(base, line::kPatL)] = pp;
+    mb[at(base, line::kPatE)] = blocks == 0 ? pp : 0;
+    mb[at(base, line::kPatQ)] = one ? pp : swap ? pattern(Axis::X, sm.sx) : pattern(Axis::Y, sm.sy);
+    const auto nq = static_cast<std::uint32_t>(-q & 0xFFFFFF);
+    for (int i = 0; i < 3; ++i) mb[at(base, line::kNegQ - i)] = static_cast<std::uint8_t>(nq >> (8 * i));
     put24(mb, at(base, line::kA), static_cast<std::uint32_t>(p));
     return sm;
   }
@@ -203,37 +205,50 @@ State decode_line(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, con
                   const Bad& bad) {
   const std::uint8_t base = sm.base;
   const std::uint8_t mode = mb[at(base, kMode)];
-  bool neg;
-  if (mode == line::kModeNonNeg || mode == codes.lyo || mode == codes.lxo) neg = false;
+  bool neg = false;
+  if (mode == line::kModeNonNeg) neg = false;
   else if (mode == line::kModeNeg) neg = true;
-  else if (mode == codes.fin_p[0]) neg = sm.swapped, s.done = true;  // D = 0: -D - 1 = -1 when swapped
+  else if (mode == codes.fin_p[0]) s.done = true;
   else throw bad("no line state has this MODE");
-  const std::int64_t d24 = get24(mb, at(base, line::kD));
-  const std::int64_t dp = neg ? d24 - (std::int64_t{1} << 24) : d24;
-  s.d = sm.swapped ? -dp - 1 : dp;
-  std::array<std::uint8_t, 3> cp{}, cy{};
-  for (int i = 0; i < 3; ++i) {
-    cp[i] = mb[at(base, line::kRx[i])];
-    cy[i] = mb[at(base, line::kRy[i])];
-  }
   const std::int64_t a = sm.a, b = sm.b;
+  const bool one = a == 0 || b == 0;
   std::int64_t x, y;
-  if (a == 0 || b == 0) {
-    if (s.d != 0) throw bad("D is not 0 on a one-axis line");
-    const std::int64_t left = from_counter(a == 0 ? cy : cp);
-    if (left > a + b) throw bad("distance left exceeds the move");
-    x = a == 0 ? 0 : a - left;
-    y = a == 0 ? b - left : 0;
+  if (s.done) {
+    // A finished line is at its end point, where D = 0: its last pulse
+    // skips the D update (the done code says it), so no byte is read.
+    s.d = 0;
+    x = a;
+    y = b;
   } else {
-    // D = a*y - b*x: the other coordinate follows, exactly or not at all.
-    const std::int64_t left = from_counter(cp);
-    const std::int64_t p = (sm.swapped ? b : a) - left;
-    if (left > (sm.swapped ? b : a)) throw bad("distance left exceeds the move");
-    const std::int64_t num = sm.swapped ? a * p - s.d : s.d + b * p, den = sm.swapped ? b : a;
-    if (num % den != 0 || num / den < 0 || num / den > (sm.swapped ? a : b))
-      throw bad("D = " + std::to_string(s.d) + " is no point of the line at " + std::to_string(p) + " on P");
-    x = sm.swapped ? num / den : p;
-    y = sm.swapped ? p : num / den;
+    const std::int64_t d24 = get24(mb, at(base, line::kD));
+    const std::int64_t dp = neg ? d24 - (std::int64_t{1} << 24) : d24;
+    s.d = sm.swapped ? -dp - 1 : dp;
+    // P's steps left: c0 and c1 as nested loops (0 counts as 256), c2 plain.
+    auto d = [](std::uint8_t v) { return std::int64_t{v == 0 ? 256 : v}; };
+    const std::int64_t pleft = d(mb[at(base, line::kC[0])]) + 256 * (d(mb[at(base, line::kC[1])]) - 1) +
+                               65536 * std::int64_t{mb[at(base, line::kC[2])]};
+    const std::uint8_t pate = mb[at(base, line::kPatE)];
+    if (pate != ((pleft <= 65536) ? mb[at(base, line::kPatL)] : 0))
+      throw bad("P's pattern in the last block is wrong: " + std::to_string(pate));
+    if (one) {
+      // D goes 0, -1, 0, ...: -1 when a Q pulse (the same axis) comes next.
+      if (s.d != 0 && s.d != -1) throw bad("D is neither 0 nor -1 on a one-axis line");
+      const std::int64_t left = 2 * pleft - (s.d == 0 ? 1 : 0);
+      if (left > a + b) throw bad("distance left exceeds the move");
+      x = a == 0 ? 0 : a - left;
+      y = a == 0 ? b - left : 0;
+      s.d = 0;
+    } else {
+      // D = a*y - b*x: the other coordinate follows, exactly or not at all.
+      const std::int64_t pmag = sm.swapped ? b : a;
+      if (pleft > pmag) throw bad("distance left exceeds the move");
+      const std::int64_t pp = pmag - pleft;
+      const std::int64_t num = sm.swapped ? a * pp - s.d : s.d + b * pp, den = pmag;
+      if (num % den != 0 || num / den < 0 || num / den > (sm.swapped ? a : b))
+        throw bad("D = " + std::to_string(s.d) + " is no point of the line at " + std::to_string(pp) + " on P");
+      x = sm.swapped ? num / den : pp;
+      y = sm.swapped ? pp : num / den;
+    }
   }
   s.x = sm.sx * x;
   s.y = sm.sy * y;

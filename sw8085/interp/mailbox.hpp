@@ -42,14 +42,15 @@ inline constexpr std::uint8_t kIdleCount = 0x08;  // 2 bytes: command pulses ser
 inline constexpr std::uint8_t kLayout = 0x0A;     // kLayoutVersion
 inline constexpr std::uint8_t kStubs = 0x0B;      // the program's dispatch stubs (JMPs), up to the slots
 inline constexpr std::uint8_t kReadyMagic = 0x5A;
-inline constexpr std::uint8_t kLayoutVersion = 4;
+inline constexpr std::uint8_t kLayoutVersion = 5;
 // The routine that ends a move reads PEND and writes ACTIVE with one DCR L.
 static_assert(kActive + 1 == kPend, "interp.a80 FINISH: MB_ACTIVE must be MB_PEND - 1");
 
-// Slots: a slot spans base-4 .. base+0x3B.
+// Slots: a slot spans base+kSlotLow .. base+kStatus.
 inline constexpr std::array<std::uint8_t, 2> kSlots = {0x80, 0xC0};
+inline constexpr int kSlotLow = -6;
 inline constexpr int kMode = 0x00;
-inline constexpr int kStatus = 0x3B;  // host: kQueued; program: kStarted
+inline constexpr int kStatus = 0x38;  // host: kQueued; program: kStarted
 inline constexpr std::uint8_t kQueued = 0x01, kStarted = 0x02;
 
 // Line slot: offsets from the base. A line with both axes moving is stored
@@ -57,18 +58,25 @@ inline constexpr std::uint8_t kQueued = 0x01, kStarted = 0x02;
 // the one whose last step ends the move (X when |YE| < |XE|), Q the other.
 // If P is Y the axes are swapped and the program's D is -D - 1 (so that
 // D >= 0, the tie included, still steps X). Only P has a distance counter;
-// Q's position follows from D: D = |XE|*|y| - |YE|*|x|.
+// Q's position follows from D: D = |XE|*|y| - |YE|*|x|. A line with one
+// axis moving is stored as a line whose P and Q are that axis (the same
+// pattern, |P| = |Q| = 1): the program's D goes 0, -1, 0, ... and P counts
+// every other pulse (the contract's D stays 0).
 namespace line {
 // Distance counters: three bytes c0 c1 c2 counting down like nested loops
 // (a stored 0 counts as 256): left = c0 + 256*(c1 - 1) + 65536*(c2 - 1),
-// 0 when all three bytes are 0.
-inline constexpr std::array<int, 3> kRx = {0x05, 0x06, 0x07};  // P's (or X's, YE = 0)
-inline constexpr std::array<int, 3> kRy = {-2, -3, -4};        // Y's, for a line with XE = 0 only
-inline constexpr int kPatY = -1;   // Q's pattern (Y's when XE = 0)
-inline constexpr int kD = 0x01;    // 3 bytes; sign in MODE (0xFF: D >= 0, 0x00: D < 0)
-inline constexpr int kPatX = 0x04;  // P's pattern (X's when YE = 0)
-inline constexpr int kNegB = 0x10;  // 3 bytes: -|Q| mod 2^24
-inline constexpr int kA = 0x14;     // 3 bytes: |P|
+// 0 when all three bytes are 0. P's (the only axis's on a one-axis line).
+// Byte 2 differs: the number of blocks of 65536 P steps after the current
+// one (left = c0 + 256*(c1 - 1) + 65536*c2), and kPatE holds P's pattern in
+// the last block, 0 before it.
+inline constexpr std::array<int, 3> kC = {-1, -2, 0x05};
+inline constexpr int kNegQ = -3;    // 3 bytes DOWNWARDS (-3, -4, -5): -|Q| mod 2^24
+inline constexpr int kPatP = -6;    // P's pattern
+inline constexpr int kD = 0x01;     // 3 bytes; sign in MODE (0xFF: D >= 0, 0x00: D < 0)
+inline constexpr int kPatQ = 0x04;  // Q's pattern
+inline constexpr int kPatE = 0x06;  // P's pattern in the last block of 65536 P steps, else 0
+inline constexpr int kPatL = 0x07;  // P's pattern, copied to kPatE when the last block begins
+inline constexpr int kA = 0x10;     // 3 bytes: |P|
 inline constexpr std::uint8_t kModeNonNeg = 0xFF, kModeNeg = 0x00;
 }  // namespace line
 
@@ -102,7 +110,7 @@ struct Codes {
     int parity = 0;    // p
     bool done = false;
   };
-  std::uint8_t idle = 0, lyo = 0, lxo = 0;
+  std::uint8_t idle = 0;
   std::array<std::uint8_t, 2> fin_p{}, fin_n{};
   std::map<std::string, std::array<std::uint8_t, 2>> named;  // "AIX" -> {C_AIX0, C_AIX1}, ...
   std::map<std::uint8_t, ArcCode> arc;                        // every arc code (FIN included)

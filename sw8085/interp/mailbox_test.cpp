@@ -34,9 +34,8 @@ TEST(Mailbox, OffsetsAreTheProgramsEqus) {
       {"SLOT0", kSlots[0]}, {"SLOT1", kSlots[1]}, {"S_MODE", kMode}, {"S_STATUS", kStatus},
       {"ST_QUEUED", kQueued}, {"ST_STARTED", kStarted},
       {"PSTEP", kPortStep}, {"PEDGES", kPortEdges}, {"PDONE", kPortDone},
-      {"L_D0", line::kD}, {"L_RX0", line::kRx[0]}, {"L_RX1", line::kRx[1]}, {"L_RX2", line::kRx[2]},
-      {"L_RY0", line::kRy[0]}, {"L_RY1", line::kRy[1]}, {"L_RY2", line::kRy[2]},
-      {"L_PATX", line::kPatX}, {"L_PATY", line::kPatY}, {"L_NB", line::kNegB},
+      {"L_D0", line::kD}, {"L_C0", line::kC[0]}, {"L_C1", line::kC[1]}, {"L_C2", line::kC[2]},
+      {"L_NQ", line::kNegQ}, {"L_PATP", line::kPatP}, {"L_PATQ", line::kPatQ}, {"L_PATE", line::kPatE}, {"L_PATL", line::kPatL},
       {"L_A", line::kA},
       {"A_D0", arc::kD}, {"A_CX", arc::kCx}, {"A_CY", arc::kCy},
       {"A_RX0", arc::kRx[0]}, {"A_RX1", arc::kRx[1]}, {"A_RX2", arc::kRx[2]},
@@ -70,18 +69,18 @@ TEST(Mailbox, NoSymbolIsDefinedTwice) {
 
 TEST(Mailbox, CodesAreDistinctAndDispatchable) {
   const Codes c = Codes::from_symbols(Program::builtin().symbols);
-  std::set<std::uint8_t> all = {c.idle, c.lyo, c.lxo};
+  std::set<std::uint8_t> all = {c.idle};
   for (const auto& [code, info] : c.arc) {
     EXPECT_TRUE(all.insert(code).second) << "code " << int(code) << " twice";
     EXPECT_GE(code, 1);
     EXPECT_LT(code, 0x80);  // 01h..7Fh: the dispatch's JP
   }
-  EXPECT_EQ(all.size(), 3u + 2 * 18);
+  EXPECT_EQ(all.size(), 1u + 2 * 18);
   // A family's code for D < 0 is its code for D >= 0 plus 3, the done codes
   // too (the program writes FIN codes as immediates with that rule).
   for (int p = 0; p < 2; ++p) EXPECT_EQ(c.fin_n[p], c.fin_p[p] + 3);
   // The stubs the program copies to kStubs end below the first slot.
-  EXPECT_LE(sym("S_END") - sym("STUBS") + sym("MB_STUBS"), kSlots[0] - 4);
+  EXPECT_LE(sym("S_END") - sym("STUBS") + sym("MB_STUBS"), kSlots[0] + kSlotLow);
   EXPECT_GT(c.idle, kLayout);
 }
 

@@ -54,11 +54,14 @@ TEST(Random24, LinePrefixesIncludingExtremes) {
   }
 }
 
-// Whole lines whose counters cross 16-bit and byte boundaries.
+// Whole lines whose counters cross 16-bit and byte boundaries: blocks of
+// 65536 P steps change on the first pulse (65537), in the middle (70000),
+// twice (-131073: the second one starts the last block), and on a one-axis
+// line (-131075, 0: P is every other pulse, 65538 P steps).
 TEST(Random24, WholeLinesAcrossByteBoundaries) {
   Host h;
   for (auto [xe, ye] : {std::pair<std::int64_t, std::int64_t>{65537, 3}, {-2, 65536}, {256, 255}, {-257, -512},
-                        {70000, -69999}, {65535, 1}}) {
+                        {70000, -69999}, {65535, 1}, {-131073, 5}, {-131075, 0}}) {
     const Move m = Move::line(xe, ye);
     const RunResult want = run_model<24>(m), got = h.run(m, nullptr, want.steps.size() + 1);
     ASSERT_EQ(got.steps.size(), want.steps.size()) << describe(m);
