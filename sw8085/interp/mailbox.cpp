@@ -280,6 +280,15 @@ State decode(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Co
   const int q = mb[static_cast<std::uint8_t>(mb[at(base, arc::kK)] + arc::kEntryQ)];
   if (q > 3) throw bad("quadrant " + std::to_string(q) + " out of range");
   s.quadrant = static_cast<std::uint8_t>(q);
+  if (s.done) {
+    // A finished arc is at its end point: its last pulse skips the D' and
+    // coordinate update (the done code says it), so those bytes are not read.
+    const Move& m = sm.move;
+    s.x = m.xe;
+    s.y = m.ye;
+    s.d = m.xe * m.xe + m.ye * m.ye - (m.xs * m.xs + m.ys * m.ys);
+    return s;
+  }
   s.x = quadrant_sign_x(q) * std::int64_t{get24(mb, at(base, arc::kCx))};
   s.y = quadrant_sign_y(q) * std::int64_t{get24(mb, at(base, arc::kCy))};
   return s;
