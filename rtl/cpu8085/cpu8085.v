@@ -663,7 +663,11 @@ module cpu8085 (
       // The ALU's register operand: DDD for INR / DCR, SSS otherwise (6:
       // M, the byte read).
       alu_src = (ir_q[7:6] == 2'b00) ? ddd : sss;
-      alu_v = alu_ir(ir_q, (alu_src == 3'd6) ? i_din : r8(alu_src), r8(R_A), r8(R_F));
+      // The ALU only for the classes whose result it is (a Verilated model
+      // skips it at the end of other cycles; its value is unused there).
+      alu_v = 16'h0000;
+      if (is_alu_r | is_alu_m | is_alu_i | is_incdec_r | is_incdec_m | is_acc)
+        alu_v = alu_ir(ir_q, (alu_src == 3'd6) ? i_din : r8(alu_src), r8(R_A), r8(R_F));
       pair_v = (rp == 2'd0) ? {r8(R_B), r8(R_C)} : (rp == 2'd1) ? {r8(R_D), r8(R_E)} : {r8(R_H), r8(R_L)};  // rp 3 (SP): not here
       dad_sum = {1'b0, {r8(R_H), r8(R_L)}} + {1'b0, (rp == 2'd3) ? sp_q : pair_v};
       {rf_we, rf_wa, rf_wd} = {1'b0, R_A, alu_v[15:8]};
