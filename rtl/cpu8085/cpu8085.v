@@ -253,9 +253,11 @@ module cpu8085 (
     end
   endfunction
 
-  // Cycle type. An INTR acknowledge reads its operand bytes by INTA cycles.
+  // Cycle type, given the cycle's address source asel (seq_asel(mc)). An
+  // INTR acknowledge reads its operand bytes by INTA cycles.
   function [2:0] seq_cyc;
     input [2:0] mc;
+    input [2:0] asel;
     reg at_1, at_le2;
     begin
       at_1 = (mc == 3'd1);
@@ -268,7 +270,7 @@ module cpu8085 (
       if (is_direct) seq_cyc = (at_le2 || ir_q[3]) ? CY_MR : CY_MW;
       if (is_out | is_in) seq_cyc = at_1 ? CY_MR : (is_in ? CY_IOR : CY_IOW);
       if (is_xthl | (is_ccc | is_call)) seq_cyc = at_le2 ? CY_MR : CY_MW;
-      if (intr_mode && seq_cyc == CY_MR && seq_asel(mc) == A_PC) seq_cyc = CY_INA;
+      if (intr_mode && seq_cyc == CY_MR && asel == A_PC) seq_cyc = CY_INA;
     end
   endfunction
 
@@ -411,7 +413,7 @@ module cpu8085 (
   // its first cycle; its opcode (end of T3) gives the fetch's length.
   always @(posedge i_clk) begin : sequencer
     reg [1:0] k;
-    reg [2:0] c, mc;
+    reg [2:0] a, c, mc;
     if (i_rst) begin
       t_q <= 3'd1;
       mc_q <= 3'd0;
@@ -453,8 +455,9 @@ module cpu8085 (
         end else begin
           mc = mc_q + 3'd1;
           mc_q <= mc;
-          c = seq_cyc(mc);
-          {cyc_q, asel_q, dsel_q, last_q} <= {c, seq_asel(mc), seq_dsel(mc), seq_last(mc)};
+          a = seq_asel(mc);
+          c = seq_cyc(mc, a);
+          {cyc_q, asel_q, dsel_q, last_q} <= {c, a, seq_dsel(mc), seq_last(mc)};
           len_q <= (c == CY_HLT) ? 3'd1 : 3'd3;
           o_io <= (c == CY_IOR || c == CY_IOW);
           // A 1-T cycle (HLT's fifth T-state) has no T2.
