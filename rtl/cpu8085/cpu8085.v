@@ -33,10 +33,10 @@ module cpu8085 (
     output reg  [15:0] o_addr,    // address of the current machine cycle
     output reg  [ 7:0] o_dout,    // write data of the current machine cycle
     input  wire [ 7:0] i_din,     // read data, sampled at the end of T3
-    output wire        o_rd,      // T2 strobe: memory read or opcode fetch
-    output wire        o_wr,      // T2 strobe: memory or I/O write
-    output wire        o_io,      // the current cycle is an I/O cycle
-    output wire        o_inta,    // T2 strobe: interrupt acknowledge read
+    output reg         o_rd,      // T2 strobe: memory read or opcode fetch
+    output reg         o_wr,      // T2 strobe: memory or I/O write
+    output reg         o_io,      // the current cycle is an I/O cycle
+    output reg         o_inta,    // T2 strobe: interrupt acknowledge read
     output wire [ 2:0] o_cycle,   // machine cycle type (CY_* below)
     output wire [ 2:0] o_tstate,  // T-state within the machine cycle, 1..6
     // interrupts and serial pins
@@ -46,7 +46,7 @@ module cpu8085 (
     input  wire        i_rst55,
     input  wire        i_intr,
     input  wire        i_sid,
-    output wire        o_sod,
+    output reg         o_sod,
     output wire        o_halted,
     output wire        o_ie,
     // debug / retire port
@@ -79,12 +79,31 @@ module cpu8085 (
   // Register file indices: the opcode's register field; 6 (M) holds F.
   localparam [2:0] R_B = 3'd0, R_C = 3'd1, R_D = 3'd2, R_E = 3'd3;
   localparam [2:0] R_H = 3'd4, R_L = 3'd5, R_F = 3'd6, R_A = 3'd7;
+  // The byte of rf_q (below) that holds register i: B C D E H L at 5..0,
+  // F at 6, A at 7.
+  function [2:0] rf_pos;
+    input [2:0] i;
+    begin
+      rf_pos = (i[2:1] == 2'b11) ? i : 3'd5 - i;
+    end
+  endfunction
   // The ALU: alu_exec() and its ALU_* operation codes.
 `include "cpu8085_alu.vh"
 
   // ---------------------------------------------------------------- state
-  // Architectural registers B C D E H L F A (F at the M index).
-  reg  [ 7:0] rf      [0:7];
+  // Architectural registers B C D E H L F A (F at the M index), indexed
+  // by the R_* below, in one vector laid out as o_dbg_regs (A F B C D E H
+  // L, A in the top byte): r8(i) reads register i. The debug port is the
+  // vector itself (a Verilated model does not assemble it at every clock,
+  // and keeps no delayed-write flags per array element).
+  reg  [63:0] rf_q;
+  localparam RF_A = 56, RF_F = 48;  // bit offsets of A and F in rf_q
+  function [7:0] r8;
+    input [2:0] i;
+    begin
+      r8 = rf_q[{rf_pos(i), 3'b000} +: 8];
+    end
+  endfunction
   reg  [15:0] pc_q, sp_q;
   // Instruction register and the temporary pair W Z.
   reg  [ 7:0] ir_q, w_q, z_q;
@@ -96,13 +115,13 @@ module cpu8085 (
   reg  [15:0] ipc_q;      // PC at the start of the unit
   reg  [15:0] vec_q;      // TRAP / RST x.5 vector of the current ack
   // Interrupt system.
-  reg         ie_q, ei_delay_q, halted_q, sod_q;
+  reg         ie_q, ei_delay_q, halted_q;
   reg  [ 2:0] masks_q;    // M7.5 M6.5 M5.5
   reg         r75_latch_q, r75_prev_q, trap_latch_q, trap_prev_q;
   reg         rim_after_trap_q, ie_before_trap_q;
 
-  // Register pairs and A / F are written out at their uses (rf[R_A],
-  // {rf[R_H], rf[R_L]}, ...), not as wires: a Verilated model computes a
+  // Register pairs and A / F are written out at their uses (r8(R_A),
+  // {r8(R_H), r8(R_L)}, ...), not as wires: a Verilated model computes a
   // wire read in several places at every clock, a use inside a clocked
   // block's rare branch only when that branch runs.
 
@@ -201,7 +220,7 @@ module cpu8085 (
   function cond_ir;
     input [2:0] ccc;
     begin
-      cond_ir = cond_of(ccc, {rf[R_F][7], rf[R_F][6], rf[R_F][2], rf[R_F][0]});
+      cond_ir = cond_of(ccc, {rf_q[RF_F + 7], rf_q[RF_F + 6], rf_q[RF_F + 2], rf_q[RF_F + 0]});
     end
   endfunction
 
@@ -234,9 +253,11 @@ module cpu8085 (
     end
   endfunction
 
-  // Cycle type. An INTR acknowledge reads its operand bytes by INTA cycles.
+  // Cycle type, given the cycle's address source asel (seq_asel(mc)). An
+  // INTR acknowledge reads its operand bytes by INTA cycles.
   function [2:0] seq_cyc;
     input [2:0] mc;
+    input [2:0] asel;
     reg at_1, at_le2;
     begin
       at_1 = (mc == 3'd1);
@@ -249,7 +270,7 @@ module cpu8085 (
       if (is_direct) seq_cyc = (at_le2 || ir_q[3]) ? CY_MR : CY_MW;
       if (is_out | is_in) seq_cyc = at_1 ? CY_MR : (is_in ? CY_IOR : CY_IOW);
       if (is_xthl | (is_ccc | is_call)) seq_cyc = at_le2 ? CY_MR : CY_MW;
-      if (intr_mode && seq_cyc == CY_MR && seq_asel(mc) == A_PC) seq_cyc = CY_INA;
+      if (intr_mode && seq_cyc == CY_MR && asel == A_PC) seq_cyc = CY_INA;
     end
   endfunction
 
@@ -319,9 +340,9 @@ module cpu8085 (
     input [2:0] asel;
     begin
       case (asel)
-        A_HL: addr_of = {rf[R_H], rf[R_L]};
-        A_BC: addr_of = {rf[R_B], rf[R_C]};
-        A_DE: addr_of = {rf[R_D], rf[R_E]};
+        A_HL: addr_of = {r8(R_H), r8(R_L)};
+        A_BC: addr_of = {r8(R_B), r8(R_C)};
+        A_DE: addr_of = {r8(R_D), r8(R_E)};
         A_WZ: addr_of = {w_q, z_q};
         A_SP: addr_of = sp_q;
         A_SP1: addr_of = sp_q + 16'd1;
@@ -334,23 +355,21 @@ module cpu8085 (
     input [3:0] dsel;
     begin
       case (dsel)
-        D_SSS: dout_of = rf[sss];
+        D_SSS: dout_of = r8(sss);
         D_Z: dout_of = z_q;
-        D_L: dout_of = rf[R_L];
-        D_H: dout_of = rf[R_H];
+        D_L: dout_of = r8(R_L);
+        D_H: dout_of = r8(R_H);
         D_PCH: dout_of = pc_q[15:8];
         D_PCL: dout_of = pc_q[7:0];
-        D_PUSH_HI: dout_of = (rp == 2'd3) ? rf[R_A] : rf[{rp, 1'b0}];
-        D_PUSH_LO: dout_of = (rp == 2'd3) ? rf[R_F] : rf[{rp, 1'b1}];
-        default: dout_of = rf[R_A];
+        D_PUSH_HI: dout_of = (rp == 2'd3) ? r8(R_A) : r8({rp, 1'b0});
+        D_PUSH_LO: dout_of = (rp == 2'd3) ? r8(R_F) : r8({rp, 1'b1});
+        default: dout_of = r8(R_A);
       endcase
     end
   endfunction
-  reg rd_q, wr_q, io_q, inta_q;
-  assign o_rd = rd_q;
-  assign o_wr = wr_q;
-  assign o_io = io_q;
-  assign o_inta = inta_q;
+  // o_rd, o_wr, o_io, o_inta (and o_sod, o_retire, o_addr, o_dout) are
+  // registers themselves: a Verilated model copies a register that drives
+  // an output port into the port at every clock.
   // During a unit's first T-state the unit's kind is not decided yet (the
   // pins decide it at the end of that T-state): o_cycle shows CY_OF then
   // (CY_HLT while halted), its own type from the second T-state on.
@@ -394,18 +413,18 @@ module cpu8085 (
   // its first cycle; its opcode (end of T3) gives the fetch's length.
   always @(posedge i_clk) begin : sequencer
     reg [1:0] k;
-    reg [2:0] c, mc;
+    reg [2:0] a, c, mc;
     if (i_rst) begin
       t_q <= 3'd1;
       mc_q <= 3'd0;
       unit_t1 <= 1'b1;
       o_retire <= 1'b0;
       {cyc_q, asel_q, dsel_q, len_q, last_q} <= {CY_OF, A_PC, D_A, 3'd4, 1'b1};
-      {rd_q, wr_q, io_q, inta_q} <= 4'b0000;
+      {o_rd, o_wr, o_io, o_inta} <= 4'b0000;
       o_addr <= 16'h0000;
       o_dout <= 8'h00;
     end else if (!i_dbg_load) begin
-      {rd_q, wr_q, inta_q} <= 3'b000;
+      {o_rd, o_wr, o_inta} <= 3'b000;
       o_retire <= 1'b0;
       if (unit_t1) begin
         k = kind_of(irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr));
@@ -416,11 +435,11 @@ module cpu8085 (
           unit_t1 <= 1'b0;
           t_q <= 3'd2;
           c = (k == K_IACK) ? CY_BI : (k == K_INTR) ? CY_INA : CY_OF;
-          {cyc_q, asel_q, dsel_q, io_q} <= {c, A_PC, D_A, 1'b0};
+          {cyc_q, asel_q, dsel_q, o_io} <= {c, A_PC, D_A, 1'b0};
           // Until the opcode is read, an instruction's fetch is 4 T long.
           {len_q, last_q} <= (k == K_IACK) ? {3'd6, 1'b0} : {3'd4, 1'b1};
-          rd_q <= (c == CY_OF);
-          inta_q <= (c == CY_INA);
+          o_rd <= (c == CY_OF);
+          o_inta <= (c == CY_INA);
           o_addr <= pc_q;
         end
       end else if (cyc_end_later) begin
@@ -432,14 +451,15 @@ module cpu8085 (
           unit_t1 <= 1'b1;
           o_retire <= 1'b1;
           cyc_q <= (halted_q || (is_hlt && mc_q == 3'd1)) ? CY_HLT : CY_OF;
-          {asel_q, dsel_q, io_q} <= {A_PC, D_A, 1'b0};
+          {asel_q, dsel_q, o_io} <= {A_PC, D_A, 1'b0};
         end else begin
           mc = mc_q + 3'd1;
           mc_q <= mc;
-          c = seq_cyc(mc);
-          {cyc_q, asel_q, dsel_q, last_q} <= {c, seq_asel(mc), seq_dsel(mc), seq_last(mc)};
+          a = seq_asel(mc);
+          c = seq_cyc(mc, a);
+          {cyc_q, asel_q, dsel_q, last_q} <= {c, a, seq_dsel(mc), seq_last(mc)};
           len_q <= (c == CY_HLT) ? 3'd1 : 3'd3;
-          io_q <= (c == CY_IOR || c == CY_IOW);
+          o_io <= (c == CY_IOR || c == CY_IOW);
           // A 1-T cycle (HLT's fifth T-state) has no T2.
         end
       end else begin
@@ -448,9 +468,9 @@ module cpu8085 (
         if (t_q == 3'd1) begin
           o_addr <= addr_of(asel_q);
           o_dout <= dout_of(dsel_q);
-          rd_q <= (cyc_q == CY_MR || cyc_q == CY_IOR);
-          wr_q <= (cyc_q == CY_MW || cyc_q == CY_IOW);
-          inta_q <= (cyc_q == CY_INA);
+          o_rd <= (cyc_q == CY_MR || cyc_q == CY_IOR);
+          o_wr <= (cyc_q == CY_MW || cyc_q == CY_IOW);
+          o_inta <= (cyc_q == CY_INA);
         end
       end
     end
@@ -499,12 +519,14 @@ module cpu8085 (
         r75_prev_q <= i_rst75;
         if (i_rst75) r75_latch_q <= 1'b1;
       end
-      if (unit_t1) begin
+      // An acknowledge clears its latch: only possible when the latch is
+      // set or its pin rises now (the decision then needs nothing else).
+      if (unit_t1 && (trap_latch_q | r75_latch_q | (i_trap & ~trap_prev_q) | (i_rst75 & ~r75_prev_q))) begin
         irq = irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr);
         if (irq == IRQ_TRAP) trap_latch_q <= 1'b0;
         if (irq == IRQ_75) r75_latch_q <= 1'b0;
       end
-      if (end_of && is_sim && rf[R_A][4]) r75_latch_q <= 1'b0;
+      if (end_of && is_sim && rf_q[RF_A + 4]) r75_latch_q <= 1'b0;
     end
   end
 
@@ -548,10 +570,10 @@ module cpu8085 (
   always @(posedge i_clk) begin
     if (i_rst) begin
       masks_q <= 3'b111;
-      sod_q <= 1'b0;
+      o_sod <= 1'b0;
     end else if (!i_dbg_load && end_of && is_sim) begin
-      if (rf[R_A][3]) masks_q <= rf[R_A][2:0];
-      if (rf[R_A][6]) sod_q <= rf[R_A][7];
+      if (rf_q[RF_A + 3]) masks_q <= rf_q[RF_A + 2:RF_A + 0];
+      if (rf_q[RF_A + 6]) o_sod <= rf_q[RF_A + 7];
     end
   end
 
@@ -585,7 +607,7 @@ module cpu8085 (
     else if (i_dbg_load) pc_q <= i_dbg_pc;
     else if (op_load || end_work) begin
       if (op_load && kind == K_INSTR) pc_q <= pc_q + 16'd1;
-      if (end_of && is_pchl) pc_q <= {rf[R_H], rf[R_L]};
+      if (end_of && is_pchl) pc_q <= {r8(R_H), r8(R_L)};
       if (end_mc) begin
         if (cyc_q == CY_MR && asel_q == A_PC) pc_q <= pc_q + 16'd1;
         if (mc_1 && (is_jcc | is_ccc) && !cond_ir(ddd) && !intr_mode) pc_q <= pc_q + 16'd2;
@@ -603,7 +625,7 @@ module cpu8085 (
     else if (i_dbg_load) sp_q <= i_dbg_sp;
     else if (end_work) begin
       if (end_of && (is_push | is_rst)) sp_q <= sp_q - 16'd1;
-      if (end_of && is_sphl) sp_q <= {rf[R_H], rf[R_L]};
+      if (end_of && is_sphl) sp_q <= {r8(R_H), r8(R_L)};
       if (end_of && is_inx && rp == 2'd3) sp_q <= sp_q + 16'd1;
       if (end_of && is_dcx && rp == 2'd3) sp_q <= sp_q - 16'd1;
       if (end_mc) begin
@@ -625,7 +647,7 @@ module cpu8085 (
   // and the ALU are computed inside
   // this block, only when a cycle ends (a Verilated model then evaluates
   // them in one T-state of three to six, not at every clock).
-  integer k;
+  integer b;
   always @(posedge i_clk) begin : regfile
     reg        rf_we, pair_we, f_we;
     reg [ 2:0] rf_wa;
@@ -635,23 +657,27 @@ module cpu8085 (
     reg [16:0] dad_sum;
     reg [ 2:0] alu_src;
     if (i_rst) begin
-      for (k = 0; k < 8; k = k + 1) rf[k] <= 8'h00;
+      rf_q <= 64'h0;
       w_q <= 8'h00;
       z_q <= 8'h00;
     end else if (i_dbg_load) begin
-      {rf[R_A], rf[R_F], rf[R_B], rf[R_C], rf[R_D], rf[R_E], rf[R_H], rf[R_L]} <= i_dbg_regs;
+      rf_q <= i_dbg_regs;
     end else if (end_work) begin
       // The ALU's register operand: DDD for INR / DCR, SSS otherwise (6:
       // M, the byte read).
       alu_src = (ir_q[7:6] == 2'b00) ? ddd : sss;
-      alu_v = alu_ir(ir_q, (alu_src == 3'd6) ? i_din : rf[alu_src], rf[R_A], rf[R_F]);
-      pair_v = (rp == 2'd0) ? {rf[R_B], rf[R_C]} : (rp == 2'd1) ? {rf[R_D], rf[R_E]} : {rf[R_H], rf[R_L]};  // rp 3 (SP): not here
-      dad_sum = {1'b0, {rf[R_H], rf[R_L]}} + {1'b0, (rp == 2'd3) ? sp_q : pair_v};
+      // The ALU only for the classes whose result it is (a Verilated model
+      // skips it at the end of other cycles; its value is unused there).
+      alu_v = 16'h0000;
+      if (is_alu_r | is_alu_m | is_alu_i | is_incdec_r | is_incdec_m | is_acc)
+        alu_v = alu_ir(ir_q, (alu_src == 3'd6) ? i_din : r8(alu_src), r8(R_A), r8(R_F));
+      pair_v = (rp == 2'd0) ? {r8(R_B), r8(R_C)} : (rp == 2'd1) ? {r8(R_D), r8(R_E)} : {r8(R_H), r8(R_L)};  // rp 3 (SP): not here
+      dad_sum = {1'b0, {r8(R_H), r8(R_L)}} + {1'b0, (rp == 2'd3) ? sp_q : pair_v};
       {rf_we, rf_wa, rf_wd} = {1'b0, R_A, alu_v[15:8]};
       {pair_we, pair_wa, pair_wd} = {1'b0, rp, i_din, z_q};
       {f_we, f_wd} = {1'b0, alu_v[7:0]};
       if (end_of) begin
-        if (is_mov_rr) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, rf[sss]};
+        if (is_mov_rr) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, r8(sss)};
         if (is_alu_r) rf_we = (ddd != 3'd7);  // CMP writes only F
         if (is_incdec_r) {rf_we, rf_wa} = {1'b1, ddd};
         if (is_acc) rf_we = 1'b1;
@@ -672,7 +698,7 @@ module cpu8085 (
         if (mc_2 && is_dad) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, dad_sum[15:0]};
         if (mc_4 && is_xthl) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, {w_q, z_q}};
         if (is_alu_m | is_alu_i | (is_incdec_m & mc_1)) f_we = 1'b1;
-        if (is_dad && mc_2) {f_we, f_wd} = {1'b1, rf[R_F][7:1], dad_sum[16]};
+        if (is_dad && mc_2) {f_we, f_wd} = {1'b1, rf_q[RF_F + 7:RF_F + 1], dad_sum[16]};
         if (is_pop && mc_2 && rp == 2'd3) {f_we, f_wd} = {1'b1, z_q & 8'hD5};
         if (mc_1 && (is_mvi_m | is_lxi | is_direct | is_pop_ret | is_jcc | is_jmp |
                      (is_out | is_in) | is_xthl | (is_ccc | is_call)))
@@ -688,18 +714,14 @@ module cpu8085 (
 `endif
       // F is written by its own port only: the byte and pair ports never
       // address it (asserted above), the guards tell synthesis so.
-      if (rf_we && rf_wa != R_F) rf[rf_wa] <= rf_wd;
-      if (pair_we && pair_wa != 2'd3) begin
-        rf[{pair_wa, 1'b0}] <= pair_wd[15:8];
-        rf[{pair_wa, 1'b1}] <= pair_wd[7:0];
-      end
-      if (f_we) rf[R_F] <= f_wd;
-      if (end_of && is_xchg) begin
-        rf[R_D] <= rf[R_H];
-        rf[R_E] <= rf[R_L];
-        rf[R_H] <= rf[R_D];
-        rf[R_L] <= rf[R_E];
-      end
+      // One enable per byte and per pair (what the register file's
+      // address decode was as an array).
+      for (b = 0; b < 8; b = b + 1)
+        if (rf_we && rf_wa != R_F && rf_pos(rf_wa) == b[2:0]) rf_q[8*b +: 8] <= rf_wd;
+      for (b = 0; b < 3; b = b + 1)  // BC at bits 47:32, DE 31:16, HL 15:0
+        if (pair_we && pair_wa == b[1:0]) rf_q[16*(2-b) +: 16] <= pair_wd;
+      if (f_we) rf_q[RF_F + 7:RF_F] <= f_wd;
+      if (end_of && is_xchg) rf_q[31:0] <= {rf_q[15:0], rf_q[31:16]};  // DE <-> HL
     end
   end
 
@@ -791,7 +813,6 @@ module cpu8085 (
 `endif
 
   // ---------------------------------------------------------------- debug
-  assign o_sod = sod_q;
   assign o_halted = halted_q;
   assign o_ie = ie_q;
   assign o_dbg_kind = kind_q;
@@ -800,7 +821,7 @@ module cpu8085 (
   assign o_dbg_op = ir_q;
   assign o_dbg_pc = pc_q;
   assign o_dbg_sp = sp_q;
-  assign o_dbg_regs = {rf[R_A], rf[R_F], rf[R_B], rf[R_C], rf[R_D], rf[R_E], rf[R_H], rf[R_L]};
+  assign o_dbg_regs = rf_q;
 endmodule
 
 `default_nettype wire

@@ -73,16 +73,20 @@ pdr() {
 }
 
 # decoder NAME: the decode function alone (a module around it that
-# asserts its classes one-hot), all opcodes, by yosys sat.
+# asserts its classes one-hot and decode_of equal to decode_all's of6,
+# of_only and Rcc), all opcodes, by yosys sat.
 decoder() {
   cat > "$out/$1.v" <<'EOF'
 module decode_onehot (input wire [7:0] i_ir);
 `include "cpu8085_decode.vh"
   wire [42:0] all = decode_all(i_ir);
   wire [38:0] cls = all[42:4];
+  // decode_of's bit patterns: decode_all's of6, of_only and Rcc (bit 20).
+  wire [2:0] of_bits = decode_of(i_ir);
   always @* begin
     assert (cls != 39'd0);
     assert ((cls & (cls - 39'd1)) == 39'd0);
+    assert (of_bits == {all[3], all[2], all[20]});
   end
 endmodule
 EOF
@@ -96,7 +100,7 @@ fails=0
 if [ "$what" = all ] || [ "$what" = proof ]; then
   t0=$(date +%s)
   if decoder decoder; then
-    echo "cpu8085_formal: decoder classes one-hot for all 256 opcodes ($(( $(date +%s) - t0 )) s)"
+    echo "cpu8085_formal: decoder classes one-hot, decode_of = decode_all, for all 256 opcodes ($(( $(date +%s) - t0 )) s)"
   else
     echo "cpu8085_formal: decoder FAILED (see $out/decoder.yosys.log)"
     fails=$((fails + 1))
@@ -118,12 +122,12 @@ fi
 
 # Mutants: "file|description|sed expression". Each must make the proof fail.
 mutants=(
-  "cpu8085_decode.vh|PUSH fetched in 4 T instead of 6|s/dc_ccc | dc_rcc | dc_rst | dc_push;/dc_ccc | dc_rcc | dc_rst;/"
+  "cpu8085_decode.vh|PUSH fetched in 4 T instead of 6|s/(f_sss == 3'd7) | (low == 4'b0101))) |/(f_sss == 3'd7))) |/"
   "cpu8085_decode.vh|MVI r also matches MVI M (classes overlap)|s/dc_mvi_r = g0 \& sss_m \& ~ddd_m;/dc_mvi_r = g0 \& sss_m;/"
   "cpu8085.v|LXI ends after its first operand byte|s/if (is_mem_rmw | is_lxi | is_dad | is_pop_ret/if (is_mem_rmw | is_dad | is_pop_ret/"
   "cpu8085.v|Jcc not taken reads the high address byte too|s/if (is_jcc) seq_last = at_2 || !cond_ir(ddd);/if (is_jcc) seq_last = at_2;/"
   "cpu8085.v|XTHL runs one cycle too many|s/if (is_xthl) seq_last = at_4;/if (is_xthl) seq_last = (mc == 3'd5);/"
-  "cpu8085.v|write strobe also in memory reads|s/wr_q <= (cyc_q == CY_MW/wr_q <= (cyc_q == CY_MR || cyc_q == CY_MW/"
+  "cpu8085.v|write strobe also in memory reads|s/o_wr <= (cyc_q == CY_MW/o_wr <= (cyc_q == CY_MR || cyc_q == CY_MW/"
 )
 if [ "$what" = all ] || [ "$what" = mutants ]; then
   n=0
