@@ -104,15 +104,18 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
     const std::int64_t blocks = (psteps - 1) >> 16, rest = psteps - 65536 * blocks;
     mb[at(base, line::kC[0])] = static_cast<std::uint8_t>(((rest - 1) & 0xFF) + 1);
     mb[at(base, line::kC[1])] = static_cast<std::uint8_t>(((rest - 1) >> 8) + 1);
-    mb[at(base, line::kC[2])] = static_cast<std::uint8_t>(blocks);
+    mb[at(base, line::kC[2])] = static_cast<std::uint8_t>(blocks + 1);  // 256 blocks: 0
     const std::uint8_t pp = one ? (a == 0 ? pattern(Axis::Y, sm.sy) : pattern(Axis::X, sm.sx))
                                 : swap ? pattern(Axis::Y, sm.sy) : pattern(Axis::X, sm.sx);
     mb[at(base, line::kPatP)] = pp;
-    mb[at(base, line::kPatL)] = pp;
-    mb[at(base, line::kPatE)] = blocks == 0 ? pp : 0;
+    mb[at(base, line::kPatB)] = pp;
+    mb[at(base, line::kPatE)] = pp;
     mb[at(base, line::kPatQ)] = one ? pp : swap ? pattern(Axis::X, sm.sx) : pattern(Axis::Y, sm.sy);
     const auto nq = static_cast<std::uint32_t>(-q & 0xFFFFFF);
-    for (int i = 0; i < 3; ++i) mb[at(base, line::kNegQ - i)] = static_cast<std::uint8_t>(nq >> (8 * i));
+    for (int i = 0; i < 3; ++i) {
+      mb[at(base, line::kNegQ - i)] = static_cast<std::uint8_t>(nq >> (8 * i));
+      mb[at(base, line::kNegQB - i)] = static_cast<std::uint8_t>(nq >> (8 * i));
+    }
     put24(mb, at(base, line::kA), static_cast<std::uint32_t>(p));
     return sm;
   }
@@ -201,14 +204,14 @@ namespace {
 // A line's state: D from MODE and its 3 bytes; the distance travelled on
 // the counted axis (P, or the only one) from its counter; Q's from D.
 template <class Bad>
-State decode_line(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Codes& codes, State s,
+State decode_line(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, State s,
                   const Bad& bad) {
   const std::uint8_t base = sm.base;
   const std::uint8_t mode = mb[at(base, kMode)];
   bool neg = false;
   if (mode == line::kModeNonNeg) neg = false;
   else if (mode == line::kModeNeg) neg = true;
-  else if (mode == codes.fin_p[0]) s.done = true;
+  else if (mode == line::done_code(base)) s.done = true;
   else throw bad("no line state has this MODE");
   const std::int64_t a = sm.a, b = sm.b;
   const bool one = a == 0 || b == 0;
@@ -223,13 +226,10 @@ State decode_line(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, con
     const std::int64_t d24 = get24(mb, at(base, line::kD));
     const std::int64_t dp = neg ? d24 - (std::int64_t{1} << 24) : d24;
     s.d = sm.swapped ? -dp - 1 : dp;
-    // P's steps left: c0 and c1 as nested loops (0 counts as 256), c2 plain.
+    // P's steps left: c0, c1, c2 as nested loops (0 counts as 256).
     auto d = [](std::uint8_t v) { return std::int64_t{v == 0 ? 256 : v}; };
     const std::int64_t pleft = d(mb[at(base, line::kC[0])]) + 256 * (d(mb[at(base, line::kC[1])]) - 1) +
-                               65536 * std::int64_t{mb[at(base, line::kC[2])]};
-    const std::uint8_t pate = mb[at(base, line::kPatE)];
-    if (pate != ((pleft <= 65536) ? mb[at(base, line::kPatL)] : 0))
-      throw bad("P's pattern in the last block is wrong: " + std::to_string(pate));
+                               65536 * (d(mb[at(base, line::kC[2])]) - 1);
     if (one) {
       // D goes 0, -1, 0, ...: -1 when a Q pulse (the same axis) comes next.
       if (s.d != 0 && s.d != -1) throw bad("D is neither 0 nor -1 on a one-axis line");
@@ -266,7 +266,7 @@ State decode(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Co
     return std::logic_error("sw8085: slot " + std::to_string(base) + " (" + describe(sm.move) + "): " + why +
                             ", MODE = " + std::to_string(mode));
   };
-  if (!sm.arc) return decode_line(sm, mb, codes, s, bad);
+  if (!sm.arc) return decode_line(sm, mb, s, bad);
   const auto it = codes.arc.find(mode);
   if (it == codes.arc.end()) throw bad("no arc state has this MODE");
   s.done = it->second.done;

@@ -42,7 +42,7 @@ inline constexpr std::uint8_t kIdleCount = 0x08;  // 2 bytes: command pulses ser
 inline constexpr std::uint8_t kLayout = 0x0A;     // kLayoutVersion
 inline constexpr std::uint8_t kStubs = 0x0B;      // the program's dispatch stubs (JMPs), up to the slots
 inline constexpr std::uint8_t kReadyMagic = 0x5A;
-inline constexpr std::uint8_t kLayoutVersion = 5;
+inline constexpr std::uint8_t kLayoutVersion = 6;
 // The routine that ends a move reads PEND and writes ACTIVE with one DCR L.
 static_assert(kActive + 1 == kPend, "interp.a80 FINISH: MB_ACTIVE must be MB_PEND - 1");
 
@@ -66,18 +66,23 @@ namespace line {
 // Distance counters: three bytes c0 c1 c2 counting down like nested loops
 // (a stored 0 counts as 256): left = c0 + 256*(c1 - 1) + 65536*(c2 - 1),
 // 0 when all three bytes are 0. P's (the only axis's on a one-axis line).
-// Byte 2 differs: the number of blocks of 65536 P steps after the current
-// one (left = c0 + 256*(c1 - 1) + 65536*c2), and kPatE holds P's pattern in
-// the last block, 0 before it.
-inline constexpr std::array<int, 3> kC = {-1, -2, 0x05};
+// c2 counts the blocks of 65536 P steps left, the current one included: c0
+// and c1 running out with c2 reaching 0 is the last pulse.
+inline constexpr std::array<int, 3> kC = {-1, -2, 0x0B};
 inline constexpr int kNegQ = -3;    // 3 bytes DOWNWARDS (-3, -4, -5): -|Q| mod 2^24
 inline constexpr int kPatP = -6;    // P's pattern
 inline constexpr int kD = 0x01;     // 3 bytes; sign in MODE (0xFF: D >= 0, 0x00: D < 0)
 inline constexpr int kPatQ = 0x04;  // Q's pattern
-inline constexpr int kPatE = 0x06;  // P's pattern in the last block of 65536 P steps, else 0
-inline constexpr int kPatL = 0x07;  // P's pattern, copied to kPatE when the last block begins
+// Copies for the block change (it runs the P step's D update from kC[2] - 1
+// down): -|Q| downwards (0x0A, 0x09, 0x08) and P's pattern below it.
+inline constexpr int kNegQB = 0x0A;
+inline constexpr int kPatB = 0x07;
+inline constexpr int kPatE = 0x0C;  // P's pattern, for the last pulse (above kC[2])
 inline constexpr int kA = 0x10;     // 3 bytes: |P|
 inline constexpr std::uint8_t kModeNonNeg = 0xFF, kModeNeg = 0x00;
+// A finished line's MODE: its slot's base + 1 (the OUT 12h byte; no arc
+// code has bit 7 set).
+constexpr std::uint8_t done_code(std::uint8_t base) { return static_cast<std::uint8_t>(base + 1); }
 }  // namespace line
 
 // Arc slot.
@@ -117,7 +122,8 @@ struct Codes {
   // The code of an arc mode ("AIX", "FOYP", ...) for parity p.
   std::uint8_t code(const std::string& name, int p) const;
   bool is_done(std::uint8_t mode) const {
-    return mode == fin_p[0] || mode == fin_p[1] || mode == fin_n[0] || mode == fin_n[1];
+    return mode == fin_p[0] || mode == fin_p[1] || mode == fin_n[0] || mode == fin_n[1] ||
+           mode == line::done_code(kSlots[0]) || mode == line::done_code(kSlots[1]);
   }
   // From the listing's symbol table; throws std::runtime_error naming a
   // missing symbol.

@@ -35,7 +35,7 @@ TEST(Mailbox, OffsetsAreTheProgramsEqus) {
       {"ST_QUEUED", kQueued}, {"ST_STARTED", kStarted},
       {"PSTEP", kPortStep}, {"PEDGES", kPortEdges}, {"PDONE", kPortDone},
       {"L_D0", line::kD}, {"L_C0", line::kC[0]}, {"L_C1", line::kC[1]}, {"L_C2", line::kC[2]},
-      {"L_NQ", line::kNegQ}, {"L_PATP", line::kPatP}, {"L_PATQ", line::kPatQ}, {"L_PATE", line::kPatE}, {"L_PATL", line::kPatL},
+      {"L_NQ", line::kNegQ}, {"L_PATP", line::kPatP}, {"L_PATQ", line::kPatQ}, {"L_PATE", line::kPatE}, {"L_NQB", line::kNegQB}, {"L_PATB", line::kPatB},
       {"L_A", line::kA},
       {"A_D0", arc::kD}, {"A_CX", arc::kCx}, {"A_CY", arc::kCy},
       {"A_RX0", arc::kRx[0]}, {"A_RX1", arc::kRx[1]}, {"A_RX2", arc::kRx[2]},
