@@ -73,9 +73,9 @@ done
 # Mutants: "description|sed expression". Each must make the proof fail.
 mutants=(
   "initial Exy from A - C instead of A - B|s/dxy_q <= {pre_xy\[HW-1\], pre_xy\[HW-1:1\]};/dxy_q <= {pre_xz[HW-1], pre_xz[HW-1:1]};/"
-  "X step leaves Exz unchanged|s/kyz_q} <= {selx_n | sely_n, selx_n | selz_n,/kyz_q} <= {selx_n | sely_n, selz_n,/"
+  "X step leaves Exz unchanged|s/kxz_q, kyz_q} <= {~selz_n, ~sely_n,/kxz_q, kyz_q} <= {~selz_n, selz_n,/"
   "distance-left flag of X cleared one step late|s/rx_q <= ~lx_q;/rx_q <= x_q != a_q;/"
-  "selection ignores the sign of Eyz|s/(~rz_n | ~nyz_n)/(1'b1)/"
+  "selection of Y after an X step ignores the sign of Eyz|s/(sx \& gxy1 \& ~gyz0)/(sx \& gxy1)/"
   "Y candidate of Exy adds 2B instead of 2A|s/oxy2 = (dsxy_e \& dxy_q) | (~dsxy_e \& a_h);/oxy2 = (dsxy_e \& dxy_q) | (~dsxy_e \& b_h);/"
   "carry-select adder picks the wrong high part|s/csel_add = {lo\[K\] ? hi1 : hi0/csel_add = {lo[K] ? hi0 : hi1/"
 )
