@@ -10,6 +10,11 @@
 #                               and z3 (base case + 1-induction); W = 4
 #                               takes ~4 min of CPU (10 min on a loaded
 #                               machine), so it is not in the default run.
+#   PDR_WIDTHS="3 4" prove.sh ... also prove these widths unbounded with
+#                               ABC's pdr (IC3) on an AIGER model of the
+#                               core (its outputs demoted to wires, so
+#                               that only the assertions are bad states);
+#                               W = 3 takes ~1 min of CPU.
 #
 # Then the proof is checked to be able to fail: each mutant of the core
 # (one deliberate bug, below) must be refuted at W = 2 by a counterexample
@@ -66,6 +71,26 @@ for w in ${Z3_WIDTHS:-}; do
     echo "interp3_formal: W = $w proved by 1-induction with z3 ($(( $(date +%s) - t0 )) s)"
   else
     echo "interp3_formal: W = $w FAILED with z3 (see $out/z3_*_w$w.log)"
+    fails=$((fails + 1))
+  fi
+done
+
+for w in ${PDR_WIDTHS:-}; do
+  t0=$(date +%s)
+  yosys -q -l "$out/aig_w$w.log" -p "
+    read_verilog -formal $core
+    chparam -set W $w interp3_core
+    prep -top interp3_core
+    delete -output o:*
+    flatten
+    script $here/../../to_aiger.ys
+    write_aiger -zinit $out/interp3_w$w.aig" > /dev/null 2>&1
+  (ulimit -v 6000000; timeout "${PDR_TIMEOUT:-3600}" yosys-abc -c "read_aiger $out/interp3_w$w.aig; fold; orpos; pdr") \
+    > "$out/pdr_w$w.log" 2>&1 || true
+  if grep -q "Property proved" "$out/pdr_w$w.log"; then
+    echo "interp3_formal: W = $w proved unbounded by pdr ($(( $(date +%s) - t0 )) s)"
+  else
+    echo "interp3_formal: W = $w NOT proved by pdr (see $out/pdr_w$w.log)"
     fails=$((fails + 1))
   fi
 done
