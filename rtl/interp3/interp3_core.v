@@ -23,11 +23,11 @@
 //               eyz: Y -> h - c, Z -> h + b)
 //   step        m = the candidate s_q picks (the new h); h <= m,
 //               c1 <= m + op1, c2 <= m + op2: one mux, one adder
-//               (carry-select); the selects are copied per 8 bits and
-//               the step enables are registers (mx_q, kxy_q, ...)
-//   selection   s_q's next value from the candidates' sign bits, the
-//               distance-left flags r and the last-step flags l (all
-//               registers), chosen by s_q
+//               (carry-select); the selects are copied per 8 bits; the
+//               step enables are one LUT of i_cmd, act_q and s_q
+//   selection   s_q's next value from the sign bits of the candidates and
+//               halves (registers), chosen by s_q: two LUT levels
+//               (the contract's rule reduced to the signs, proved below)
 //   flags       r = (x < a); l = (x + 1 == a), the next X step is the last,
 //               kept by comparing x with a - 2 (a register) when X steps
 //
@@ -132,7 +132,7 @@ module interp3_core #(
   reg [HW-1:0] cxy1_q, cxy2_q;        // exy candidates: after X, after Y
   reg [HW-1:0] cxz1_q, cxz2_q;        // exz candidates: after X, after Z
   reg [HW-1:0] cyz1_q, cyz2_q;        // eyz candidates: after Y, after Z
-  reg [2:0] s_q;                      // next step {Z, Y, X}; 111 while loading
+  reg [2:0] s_q;                      // next step {Z, Y, X}; 000 while loading
   // Copies of the bit of s_q that picks each discriminant's first
   // candidate (X, X, Y): the multiplexers' selects, per 8 bits.
   (* keep *) reg [NG-1:0] sxy_q, sxz_q, syz_q;
@@ -154,7 +154,7 @@ module interp3_core #(
 
   // ------------------------------------------------------------- datapath
   // The new half of each discriminant: the candidate of the stepping axis;
-  // 0 in the clocks after L0 and L1; the first candidate (s_q = 111),
+  // 0 in the clocks after L0 and L1; the second candidate (s_q = 000),
   // which is then the initial half, in the clock after L2.
   // (Each select copied to every bit of its group.)
   wire [HW-1:0] sxy_e, sxz_e, syz_e, zxy_e, zxz_e, zyz_e, dsxy_e, dsxz_e, dsyz_e;
@@ -191,21 +191,29 @@ module interp3_core #(
   wire en_yz = ldph_q | (i_cmd & kyz_q);
 
   // ------------------------------------------------------------ selection
-  // The state after this clock's step under s_q (or while loading, under
-  // s_q = 111: the flags unchanged, the signs of the first candidates).
-  wire rx_n = (sx & ~sy) ? ~lx_q : rx_q;
-  wire ry_n = (sy & ~sz) ? ~ly_q : ry_q;
-  wire rz_n = (sz & ~sx) ? ~lz_q : rz_q;
-  wire nxy_n = sx ? cxy1_q[HW-1] : sy ? cxy2_q[HW-1] : hxy_q[HW-1];  // 1: negative
-  wire nxz_n = sx ? cxz1_q[HW-1] : sz ? cxz2_q[HW-1] : hxz_q[HW-1];
-  wire nyz_n = sy ? cyz1_q[HW-1] : sz ? cyz2_q[HW-1] : hyz_q[HW-1];
-  //   X  if rx and (not ry or exy >= 0) and (not rz or exz >= 0)
-  //   Y  else if ry and (not rz or eyz >= 0)
-  //   Z  else if rz
-  wire selx_n = rx_n & (~ry_n | ~nxy_n) & (~rz_n | ~nxz_n);
-  wire sely_n = ~selx_n & ry_n & (~rz_n | ~nyz_n);
-  wire selz_n = ~selx_n & ~sely_n & rz_n;
-  wire act_n = rx_n | ry_n | rz_n;
+  // While the move is not done, the contract's selection is a function of
+  // the discriminants' signs alone (docs/rtl-3axis.md, "The selection from
+  // the signs"; proved below):
+  //   X  if exy >= 0 and exz >= 0
+  //   Y  if exy < 0 and eyz >= 0
+  //   Z  if exz < 0 and eyz < 0
+  // (an axis with no distance left makes the discriminants that name it
+  // take the sign that excludes it). The next selection is that of the
+  // state after this clock's step: with s_q one-hot, for each axis s_q may
+  // name, the signs of the candidates that step makes the new halves, and
+  // the halves it leaves alone; in the clock after L2 (p3_q, s_q = 000) the
+  // initial halves, which are then both candidates of each discriminant.
+  // Written as a sum of products, one term per step axis (two LUT levels).
+  wire gxy1 = cxy1_q[HW-1], gxy2 = cxy2_q[HW-1], gxy0 = hxy_q[HW-1];  // 1: negative
+  wire gxz1 = cxz1_q[HW-1], gxz2 = cxz2_q[HW-1], gxz0 = hxz_q[HW-1];
+  wire gyz1 = cyz1_q[HW-1], gyz2 = cyz2_q[HW-1], gyz0 = hyz_q[HW-1];
+  wire selx_n = ((sx | p3_q) & ~gxy1 & ~gxz1) | (sy & ~gxy2 & ~gxz0) | (sz & ~gxy0 & ~gxz2);
+  wire sely_n = (sx & gxy1 & ~gyz0) | ((sy | p3_q) & gxy2 & ~gyz1) | (sz & gxy0 & ~gyz2);
+  wire selz_n = (sx & gxz1 & gyz0) | (sy & gxz0 & gyz1) | ((sz | p3_q) & gxz2 & gyz2);
+  // Distance left after the step on some axis: the step's own flag becomes
+  // !l, the others stay.
+  wire act_n = (sx & (~lx_q | ry_q | rz_q)) | (sy & (rx_q | ~ly_q | rz_q))
+             | (sz & (rx_q | ry_q | ~lz_q)) | (p3_q & (rx_q | ry_q | rz_q));
 
   // ---------------------------------------------------------- preparation
   // L1: -b = ~b + 1 and a - b = a + ~b + 1 (x - ~y is x + y + 1: one carry
@@ -388,33 +396,33 @@ module interp3_core #(
     end
   end
 
-  // The next step and whether one can come: 111 and not active from the
+  // The next step and whether one can come: 000 and not active from the
   // load; computed at L3 from the prepared state, then after every step.
+  // s_q and its copies are cleared at L1 (p1_q; they are not read before
+  // L3), so that i_load is one LUT away from every register; act_q and the
+  // step enables are cleared by the load itself.
   always @(posedge i_clk) begin
-    if (i_rst) begin
+    if (i_rst | p1_q) begin
       s_q <= 3'b000;
       sxy_q <= {NG{1'b0}};
       sxz_q <= {NG{1'b0}};
       syz_q <= {NG{1'b0}};
-      act_q <= 1'b0;
-      {mx_q, my_q, mz_q} <= 3'b000;
-      {kxy_q, kxz_q, kyz_q} <= 3'b000;
-    end else if (i_load) begin
-      s_q <= 3'b111;
-      sxy_q <= {NG{1'b1}};
-      sxz_q <= {NG{1'b1}};
-      syz_q <= {NG{1'b1}};
-      act_q <= 1'b0;
-      {mx_q, my_q, mz_q} <= 3'b000;
-      {kxy_q, kxz_q, kyz_q} <= 3'b000;
     end else if (p3_q | go) begin
       s_q <= {selz_n, sely_n, selx_n};
       sxy_q <= {NG{selx_n}} ^ sxy_q ^ {NG{sx}};  // (copy ^ original) as above
       sxz_q <= {NG{selx_n}} ^ sxz_q ^ {NG{sx}};
       syz_q <= {NG{sely_n}} ^ syz_q ^ {NG{sy}};
+    end
+  end
+  always @(posedge i_clk) begin
+    if (i_rst | i_load) begin
+      act_q <= 1'b0;
+      {mx_q, my_q, mz_q} <= 3'b000;
+      {kxy_q, kxz_q, kyz_q} <= 3'b000;
+    end else if (p3_q | go) begin
       act_q <= act_n;
-      {mx_q, my_q, mz_q} <= {selx_n, sely_n, selz_n};
-      {kxy_q, kxz_q, kyz_q} <= {selx_n | sely_n, selx_n | selz_n, sely_n | selz_n};
+      {mx_q, my_q, mz_q} <= {selx_n, sely_n, selz_n} & {3{act_n}};
+      {kxy_q, kxz_q, kyz_q} <= {~selz_n, ~sely_n, ~selx_n} & {3{act_n}};
     end
   end
 
@@ -523,7 +531,8 @@ module interp3_core #(
       assert (!(o_step_x && o_step_y) && !(o_step_x && o_step_z) && !(o_step_y && o_step_z));
       if (ldph_q) begin
         // Preparing: no step can come; nothing travelled yet.
-        assert (s_q == 3'b111 && !act_q);
+        assert (!act_q);
+        if (!p1_q) assert (s_q == 3'b000);
         assert (x_q == {W{1'b0}} && y_q == {W{1'b0}} && z_q == {W{1'b0}});
         assert (!o_step_x && !o_step_y && !o_step_z);
         if (p3_q) begin
@@ -540,10 +549,10 @@ module interp3_core #(
         assert (exy_f >= -b2_f && exy_f <= a2_f);
         assert (exz_f >= -c2_f && exz_f <= a2_f);
         assert (eyz_f >= -c2_f && eyz_f <= b2_f);
-        // The next step is the selection of this state; a step can come
-        // while the move is not done.
-        assert (s_q == {selz_f, sely_f, selx_f});
+        // A step can come while the move is not done; it is the contract's
+        // selection of this state.
         assert (act_q == ~o_done);
+        if (act_q) assert (s_q == {selz_f, sely_f, selx_f});
         // The candidates are the halves after each step.
         if (act_q) begin
           assert (cxy1_q == hxy_q + nb_q && cxy2_q == hxy_q + a_h);
