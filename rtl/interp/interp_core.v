@@ -7,8 +7,8 @@
 // previous block's last pulse). i_abort drops the queue and the running
 // move, like a reset of the interpolator alone. A block pushed while
 // o_full is refused (nothing happens); a pushed block is in the queue
-// (o_level) at once and can be loaded two clocks later (one preparation
-// stage, the queue memory).
+// (o_level) at once and can be loaded three clocks later (2 preparation
+// stages, the late part's queue memory).
 `default_nettype none
 
 module interp_core #(
@@ -88,7 +88,10 @@ module interp_core #(
       .i_pop(pop), .o_valid(l_valid), .o_data(h_late), .o_level(unused_l_level), .o_used(unused_l_used)
   );
 
-  wire head_valid = e_valid & l_valid;  // (l_valid implies e_valid)
+  // The late queue's head valid alone (one LUT input less before the
+  // load decision): it implies the early one's (asserted below).
+  wire head_valid = l_valid;
+  wire unused_e_valid = e_valid;
   wire [PRE_BITS-1:0] head = {h_early[EW-1:W+1], h_late[LW-1:PRE_ADD - PRE_FLAGS],
                               h_early[W:0], h_late[PRE_ADD - PRE_FLAGS - 1:0]};
 
@@ -112,5 +115,17 @@ module interp_core #(
       .o_xmag(o_xmag), .o_xneg(o_xneg), .o_ymag(o_ymag), .o_yneg(o_yneg),
       .o_d(o_d), .o_q(o_q), .o_k(o_k), .o_arc(o_arc)
   );
+
+`ifdef FORMAL
+  // The late part of a block is written a clock after its early part and
+  // both queues are popped together: whenever the late head is valid, the
+  // early head is, and holds the same block.
+  reg past_valid_f;
+  initial past_valid_f = 1'b0;
+  always @(posedge i_clk) past_valid_f <= 1'b1;
+  always @(*) begin
+    if (past_valid_f) assert(!l_valid || e_valid);
+  end
+`endif
 
 endmodule
