@@ -10,8 +10,8 @@
 //
 // Each interval is a down-counter loaded when it starts (the high time at
 // the rising edge, space and hold at the falling edge, setup at the DIR
-// change; high time and setup share one counter, they never overlap) and
-// counting to 0; an interval of n clocks has passed when the
+// change; high time, hold and setup share one counter: they follow each
+// other) and counting to 0; an interval of n clocks has passed when the
 // counter, loaded with n in the first clock of the interval, is <= 1.
 // That test is a registered flag beside each counter (formed from the value
 // loaded, or from "<= 2" before a count), so no counter's compare sits in
@@ -42,25 +42,27 @@ module step_chan #(
 
   reg pend_q;          // a pulse is waiting or being emitted
   reg want_q;          // its direction
-  // STEP high clocks left (while STEP is high), or clocks before STEP may
-  // rise after a DIR change (while it is low): the two never overlap (a
-  // rise needs the setup passed, a DIR change needs STEP low), so they
-  // share one counter. Both included this clock.
-  reg [TW-1:0] hs_q;
+  // One counter for the intervals that follow each other: the STEP high
+  // time (from a rise), the DIR hold (from a fall) and the DIR setup (from
+  // a DIR change, which needs the hold passed). A rise may come while the
+  // hold still counts (no DIR change wanted): the hold is then abandoned,
+  // DIR cannot change while STEP is high, and the next fall starts it
+  // again. Clocks left, this one included.
+  reg [TW-1:0] cnt_q;
+  reg setup_q;         // cnt_q counts a DIR setup (from a DIR change to the rise)
   reg [TW-1:0] spc_q;  // STEP low clocks still required, this one included
-  reg [TW-1:0] hld_q;  // clocks before DIR may change, this one included
 
-  // The flags: the counter beside each is <= 1. hs_ok is the high time's
-  // "last clock" while STEP is high and "setup passed" while it is low
-  // (after a fall it stays set until a DIR change reloads the counter).
-  reg hs_ok, space_ok, hold_ok;
+  // The flags: the counter beside each is <= 1. cnt_ok is the high time's
+  // "last clock" while STEP is high, "hold passed" after a fall, "setup
+  // passed" after a DIR change.
+  reg cnt_ok, space_ok;
   // v <= 2.
   function automatic le2(input [TW-1:0] v);
     le2 = (v[TW-1:2] == 0) & ~(v[1] & v[0]);
   endfunction
-  wire change_dir = pend_q & ~o_step & (o_dir != want_q) & hold_ok;
-  wire rise = pend_q & ~o_step & (o_dir == want_q) & space_ok & hs_ok;
-  wire fall = o_step & hs_ok;
+  wire change_dir = pend_q & ~o_step & (o_dir != want_q) & cnt_ok;
+  wire rise = pend_q & ~o_step & (o_dir == want_q) & space_ok & (~setup_q | cnt_ok);
+  wire fall = o_step & cnt_ok;
 
   assign o_ready = ~pend_q;
 
@@ -84,20 +86,26 @@ module step_chan #(
     else if (fall) o_step <= 1'b0;
   end
 
-  // High time left / setup time still required.
+  // High time left / hold / setup still required.
   always @(posedge i_clk) begin
     if (i_rst) begin
-      hs_q <= {TW{1'b0}};
-      hs_ok <= 1'b1;
+      cnt_q <= {TW{1'b0}};
+      cnt_ok <= 1'b1;
+      setup_q <= 1'b0;
     end else if (rise) begin
-      hs_q <= i_len;
-      hs_ok <= i_len_le1;
+      cnt_q <= i_len;
+      cnt_ok <= i_len_le1;
+      setup_q <= 1'b0;
+    end else if (fall) begin
+      cnt_q <= i_hold;
+      cnt_ok <= i_hold_le1;
     end else if (change_dir) begin
-      hs_q <= i_setup;
-      hs_ok <= i_setup_le1;
-    end else if (~hs_ok) begin
-      hs_q <= hs_q - 1'b1;
-      hs_ok <= le2(hs_q);
+      cnt_q <= i_setup;
+      cnt_ok <= i_setup_le1;
+      setup_q <= 1'b1;
+    end else if (~cnt_ok) begin
+      cnt_q <= cnt_q - 1'b1;
+      cnt_ok <= le2(cnt_q);
     end
   end
 
@@ -112,20 +120,6 @@ module step_chan #(
     end else if (~space_ok) begin
       spc_q <= spc_q - 1'b1;
       space_ok <= le2(spc_q);
-    end
-  end
-
-  // Hold time still required.
-  always @(posedge i_clk) begin
-    if (i_rst) begin
-      hld_q <= {TW{1'b0}};
-      hold_ok <= 1'b1;
-    end else if (fall) begin
-      hld_q <= i_hold;
-      hold_ok <= i_hold_le1;
-    end else if (~hold_ok) begin
-      hld_q <= hld_q - 1'b1;
-      hold_ok <= le2(hld_q);
     end
   end
 
