@@ -3,11 +3,14 @@
 // values interp_dp loads: the inward/outward magnitudes, SUB/ADD, the
 // per-move comparison constants and the initial flags.
 //
-// Two pipeline stages, so that no path is longer than a multiplexer, an
-// adder or a comparator: stage 1 (the clock after i_push) selects the
-// inward/outward magnitudes and the targets; stage 2 forms SUB, ADD and
-// the constants and carries stage 1 along; the output (o_wr high for one
-// clock, two clocks after i_push) adds the flags, compared from stage 2.
+// Two pipeline stages, so that no path is longer than a multiplexer, or an
+// adder, or a comparator: stage 1 (the clock after i_push, o_wr) selects
+// the inward/outward magnitudes and the targets, and gives the early
+// fields of the prepared block (kind, sense, signs, q, k, ci, co, ADD);
+// stage 2 (the clock after, o_wr_late) forms the late fields from stage
+// 1: SUB, the comparison constants and the flags. The queue stores the
+// two parts a clock apart (interp_core), so no field is carried through
+// a stage it does not need.
 // A block may be pushed in every clock.
 //
 // Line: XE, YE are |Xe|, |Ye|; SXN, SYN their signs; XS, YS, Q, K unused.
@@ -23,8 +26,8 @@ module blk_prep #(
     input  wire           i_rst,
     input  wire           i_push,
     input  wire [4*W+8:0] i_blk,      // the host's block: [BLK_BITS-1:0], interp_block.vh
-    output wire [1:0]     o_inflight, // pushes not yet written (0..2)
-    output wire           o_wr,       // the prepared block is valid
+    output wire           o_wr,       // the early fields of o_pre are valid (the clock after i_push)
+    output wire           o_wr_late,  // the late fields are valid (the clock after o_wr)
     output wire [8*W+26:0] o_pre      // the prepared block: [PRE_BITS-1:0], interp_block.vh
 );
 
@@ -76,6 +79,11 @@ module blk_prep #(
   end
 
   // ------------------------------------------------------------- stage 2
+  // The fields with an adder or a comparator: SUB, the per-move constants
+  // and the flags, registered from stage 1 (o_wr_late, the clock after
+  // o_wr). The two flags that compare with a value one off (ci - 1 == ti,
+  // co == to - 1) use eq_inc below, so no adder sits before their
+  // comparators.
   wire [W+1:0] ti = {2'b00, ti1s_q};
   wire [W+1:0] to = {2'b00, to1s_q};
   wire [W+1:0] two = {{W{1'b0}}, 2'b10};
@@ -83,14 +91,32 @@ module blk_prep #(
   wire [W+1:0] d1 = arc1_q ? {{(W+1){1'b0}}, 1'b1} : {(W+2){1'b1}};
   wire [W+1:0] d2 = arc1_q ? two : {{(W+1){1'b1}}, 1'b0};
 
+  // (a + 1) mod 2^(W+1) == b without an adder: a + ~b == -2, checked bit
+  // by bit against the carries such a sum has (the carry into bit i is a
+  // function of bit i - 1 of both operands: c(1) = a(0) | ~b(0), c(i) =
+  // a(i-1) & ~b(i-1) above), so each bit is one 4-input term and the
+  // test is their AND. W + 1 bit operands: a W-bit value zero-extended
+  // compares without wrap-around.
+  function automatic [W:0] inc_terms(input [W:0] a, input [W:0] b);
+    integer i;
+    begin
+      inc_terms[0] = a[0] ^ b[0];
+      inc_terms[1] = (a[1] ^ b[1]) == (a[0] | ~b[0]);
+      for (i = 2; i <= W; i = i + 1)
+        inc_terms[i] = (a[i] ^ b[i]) == (a[i-1] & ~b[i-1]);
+    end
+  endfunction
+  // The terms are kept (LUT boundaries): one LUT level, then the AND.
+  // ci - 1 == ti in W bits (ci - 1 wraps at ci = 0 as the W-bit value
+  // does): ti + 1 == ci modulo 2^W, the test of the two shifted up one bit
+  // ({ti, 1} + 1 = {ti + 1, 0}). co == to - 1: co + 1 == to.
+  (* keep *) wire [W:0] t_in_one = inc_terms({ti1s_q, 1'b1}, {ci1_q, 1'b0});
+  (* keep *) wire [W:0] t_out_one = inc_terms({1'b0, co1_q}, {1'b0, to1s_q});
+
   reg v2_q;
-  reg [W:0] sub2_q, add2_q;
-  reg [W+1:0] ti1_q, ti2_q, tim1_q, to1_q, to2_q;
-  reg [W-1:0] cim1_q;         // ci - 1
-  reg arc2_q, cw2_q, sxn2_q, syn2_q;
-  reg [1:0] q2_q;
-  reg [2:0] k2_q;
-  reg [W-1:0] ci2_q, co2_q, ti2s_q, to2s_q;
+  reg [W:0] sub2_q;
+  reg [W+1:0] ti1_q, ti2_q, tim1_q, to2_q;
+  reg [7:0] flags2_q;                                    // interp_dp F_* order
 
   always @(posedge i_clk) begin
     if (i_rst) v2_q <= 1'b0;
@@ -99,56 +125,41 @@ module blk_prep #(
 
   always @(posedge i_clk) begin
     if (v1_q) begin
-      cim1_q <= ci1_q - 1'b1;
       sub2_q <= arc1_q ? {ci1_q - 1'b1, 1'b1} : {1'b0, to1s_q};
-      add2_q <= arc1_q ? {co1_q, 1'b1} : {1'b0, ti1s_q};
       ti1_q <= ti + d1;
       ti2_q <= ti + d2;
       tim1_q <= ti - 1'b1;
-      to1_q <= to - 1'b1;
       to2_q <= to - two;
-      arc2_q <= arc1_q;
-      cw2_q <= cw1_q;
-      sxn2_q <= sxn1_q;
-      syn2_q <= syn1_q;
-      q2_q <= q1_q;
-      k2_q <= k1_q;
-      ci2_q <= ci1_q;
-      co2_q <= co1_q;
-      ti2s_q <= ti1s_q;
-      to2s_q <= to1s_q;
+      flags2_q[0] <= (ci1_q == ti1s_q);                    // F_IN_EX
+      flags2_q[1] <= (co1_q == to1s_q);                    // F_OUT_EX
+      flags2_q[2] <= arc1_q ? &t_in_one : (ti1s_q == 1);   // F_IN_ONE: ci == ti1 (line: 0 == A - 1)
+      flags2_q[3] <= &t_out_one;                           // F_OUT_ONE: co == to - 1
+      flags2_q[4] <= arc1_q & (ci1_q == 1);                // F_CI_ONE
+      flags2_q[5] <= (co1_q == ti1s_q);                    // F_CO_TI
+      flags2_q[6] <= (to1s_q == 0);                        // F_TO_Z
+      flags2_q[7] <= (to1s_q == 1);                        // F_TO_ONE
     end
   end
 
   // -------------------------------------------------------------- output
-  assign o_inflight = {1'b0, v1_q} + {1'b0, v2_q};
-  assign o_wr = v2_q;
-  assign o_pre[PRE_ARC] = arc2_q;
-  assign o_pre[PRE_CW] = cw2_q;
-  assign o_pre[PRE_SXN] = sxn2_q;
-  assign o_pre[PRE_SYN] = syn2_q;
-  assign o_pre[PRE_Q +: 2] = q2_q;
-  assign o_pre[PRE_K +: 3] = k2_q;
-  assign o_pre[PRE_CI +: W] = ci2_q;
-  assign o_pre[PRE_CO +: W] = co2_q;
+  // Early fields (o_wr): stage 1 and ADD, a multiplexer after it.
+  assign o_wr = v1_q;
+  assign o_pre[PRE_ARC] = arc1_q;
+  assign o_pre[PRE_CW] = cw1_q;
+  assign o_pre[PRE_SXN] = sxn1_q;
+  assign o_pre[PRE_SYN] = syn1_q;
+  assign o_pre[PRE_Q +: 2] = q1_q;
+  assign o_pre[PRE_K +: 3] = k1_q;
+  assign o_pre[PRE_CI +: W] = ci1_q;
+  assign o_pre[PRE_CO +: W] = co1_q;
+  assign o_pre[PRE_ADD +: W + 1] = arc1_q ? {co1_q, 1'b1} : {1'b0, ti1s_q};
+  // Late fields (o_wr_late): stage 2.
+  assign o_wr_late = v2_q;
   assign o_pre[PRE_SUB +: W + 1] = sub2_q;
-  assign o_pre[PRE_ADD +: W + 1] = add2_q;
   assign o_pre[PRE_TI1 +: W + 2] = ti1_q;
   assign o_pre[PRE_TI2 +: W + 2] = ti2_q;
   assign o_pre[PRE_TIM1 +: W + 2] = tim1_q;
   assign o_pre[PRE_TO2 +: W + 2] = to2_q;
-
-  // ci == ti1: arc, ci - 1 == ti; line, 0 == A - 1.
-  wire in_one = arc2_q ? (cim1_q == ti2s_q) : (ti2s_q == 1);
-  wire [7:0] flags;                                     // interp_dp F_* order
-  assign o_pre[PRE_FLAGS +: 8] = flags;
-  assign flags[0] = (ci2_q == ti2s_q);                // F_IN_EX
-  assign flags[1] = (co2_q == to2s_q);                // F_OUT_EX
-  assign flags[2] = in_one;                           // F_IN_ONE
-  assign flags[3] = ({2'b00, co2_q} == to1_q);        // F_OUT_ONE
-  assign flags[4] = arc2_q & (ci2_q == 1);            // F_CI_ONE
-  assign flags[5] = (co2_q == ti2s_q);                // F_CO_TI
-  assign flags[6] = (to2s_q == 0);                    // F_TO_Z
-  assign flags[7] = (to2s_q == 1);                    // F_TO_ONE
+  assign o_pre[PRE_FLAGS +: 8] = flags2_q;
 
 endmodule

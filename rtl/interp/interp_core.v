@@ -7,7 +7,8 @@
 // previous block's last pulse). i_abort drops the queue and the running
 // move, like a reset of the interpolator alone. A block pushed while
 // o_full is refused (nothing happens); a pushed block is in the queue
-// (o_level) at once and can be loaded three clocks later.
+// (o_level) at once and can be loaded three clocks later (2 preparation
+// stages, the late part's queue memory).
 `default_nettype none
 
 module interp_core #(
@@ -45,36 +46,66 @@ module interp_core #(
 
   reg full_q;
   wire push_ok = i_push & ~o_full;
-  wire p_wr;
-  wire [1:0] p_inflight;
+  wire p_wr, p_wr_late;       // the early / late fields of a block are written
   wire [PRE_BITS-1:0] p_pre;  // prepared block, into the queue
 
   blk_prep #(.W(W)) u_prep (
       .i_clk(i_clk), .i_rst(i_rst | i_abort), .i_push(push_ok), .i_blk(i_blk),
-      .o_inflight(p_inflight), .o_wr(p_wr), .o_pre(p_pre)
+      .o_wr(p_wr), .o_wr_late(p_wr_late), .o_pre(p_pre)
   );
 
-  wire head_valid, pop;
-  wire [PRE_BITS-1:0] head;
+  // The queue, in two parts: blk_prep gives a block's early fields (its
+  // stage 1, and ADD) a clock before the late ones (SUB, the constants,
+  // the flags, from its stage 2), and each part has its queue, written
+  // when its part comes, so no field waits in a register. Both are popped
+  // together; the late queue is never ahead of the early one, so the head
+  // is valid when the late queue's is. A field of the prepared block
+  // belongs to exactly one part (the concatenations below; a field added
+  // to interp_block.vh's PRE_* must be added to one of them, the widths
+  // of `head` and the two parts are checked by lint).
+  localparam integer EW = 2 * W + 9 + W + 1;       // ARC..CI, CO, ADD
+  localparam integer LW = PRE_BITS - EW;           // SUB, TI1, TI2, TIM1, TO2, FLAGS
+  wire [EW-1:0] p_early = {p_pre[PRE_CO +: PRE_BITS - PRE_CO], p_pre[PRE_ADD +: W + 1]};
+  wire [LW-1:0] p_late = {p_pre[PRE_SUB +: W + 1], p_pre[PRE_FLAGS +: PRE_ADD - PRE_FLAGS]};
+
+  wire e_valid, l_valid, pop;
+  wire [EW-1:0] h_early;
+  wire [LW-1:0] h_late;
   wire [QAW+1:0] fifo_level;
   wire [QAW:0] mem_used;
+  wire [QAW+1:0] unused_l_level;
+  wire [QAW:0] unused_l_used;
 
-  move_fifo #(.WIDTH(PRE_BITS), .AW(QAW)) u_fifo (
+  move_fifo #(.WIDTH(EW), .AW(QAW)) u_fifo (
       .i_clk(i_clk), .i_rst(i_rst), .i_flush(i_abort),
-      .i_push(p_wr), .i_data(p_pre),
-      .i_pop(pop), .o_valid(head_valid), .o_data(head), .o_level(fifo_level), .o_used(mem_used)
+      .i_push(p_wr), .i_data(p_early),
+      .i_pop(pop), .o_valid(e_valid), .o_data(h_early), .o_level(fifo_level), .o_used(mem_used)
   );
 
-  // Full counts the blocks still in preparation; so does the level. It is
-  // a register: the blocks committed to the memory after this clock, not
-  // counting the one the datapath may take (never too optimistic).
-  wire [QAW+1:0] committed = {1'b0, mem_used} + {{QAW{1'b0}}, p_inflight};
+  move_fifo #(.WIDTH(LW), .AW(QAW)) u_fifo_late (
+      .i_clk(i_clk), .i_rst(i_rst), .i_flush(i_abort),
+      .i_push(p_wr_late), .i_data(p_late),
+      .i_pop(pop), .o_valid(l_valid), .o_data(h_late), .o_level(unused_l_level), .o_used(unused_l_used)
+  );
+
+  // The late queue's head valid alone (one LUT input less before the
+  // load decision): it implies the early one's (asserted below).
+  wire head_valid = l_valid;
+  wire unused_e_valid = e_valid;
+  wire [PRE_BITS-1:0] head = {h_early[EW-1:W+1], h_late[LW-1:PRE_ADD - PRE_FLAGS],
+                              h_early[W:0], h_late[PRE_ADD - PRE_FLAGS - 1:0]};
+
+  // Full counts the blocks still in preparation (the early queue holds a
+  // block from its stage-1 clock on); so does the level. It is a register:
+  // the blocks committed to the memory after this clock, not counting the
+  // one the datapath may take (never too optimistic).
+  wire [QAW+1:0] committed = {1'b0, mem_used} + {{(QAW+1){1'b0}}, p_wr};
   always @(posedge i_clk) begin
     if (i_rst | i_abort) full_q <= 1'b0;
     else full_q <= (committed + {{(QAW+1){1'b0}}, push_ok} >= DEPTH);
   end
   assign o_full = full_q;
-  assign o_level = fifo_level + {{QAW{1'b0}}, p_inflight};
+  assign o_level = fifo_level + {{(QAW+1){1'b0}}, p_wr};
 
   interp_dp #(.W(W)) u_dp (
       .i_clk(i_clk), .i_rst(i_rst | i_abort), .i_cmd(i_cmd),
@@ -84,5 +115,17 @@ module interp_core #(
       .o_xmag(o_xmag), .o_xneg(o_xneg), .o_ymag(o_ymag), .o_yneg(o_yneg),
       .o_d(o_d), .o_q(o_q), .o_k(o_k), .o_arc(o_arc)
   );
+
+`ifdef FORMAL
+  // The late part of a block is written a clock after its early part and
+  // both queues are popped together: whenever the late head is valid, the
+  // early head is, and holds the same block.
+  reg past_valid_f;
+  initial past_valid_f = 1'b0;
+  always @(posedge i_clk) past_valid_f <= 1'b1;
+  always @(*) begin
+    if (past_valid_f) assert(!l_valid || e_valid);
+  end
+`endif
 
 endmodule

@@ -63,10 +63,14 @@ module move_fifo #(
     else if (wr) wptr_q <= wptr_q + 1'b1;
   end
 
-  // Read pointer.
+  // Read pointer. Its enable is one LUT after the pop too: the reset is
+  // in a kept term from flip-flops and inputs (an iCE40 flip-flop's reset
+  // acts only with its enable, so a reset written before the enable makes
+  // the enable rd | reset, a LUT after rd).
+  (* keep *) wire rd_idle_r = rd_idle | i_rst | i_flush;
+  wire rptr_ce = rd_idle_r | (rd_ne & i_pop);
   always @(posedge i_clk) begin
-    if (i_rst | i_flush) rptr_q <= {(AW+1){1'b0}};
-    else if (rd) rptr_q <= rptr_q + 1'b1;
+    if (rptr_ce) rptr_q <= (i_rst | i_flush) ? {(AW+1){1'b0}} : rptr_q + 1'b1;
   end
 
   // Head valid: after a read, or kept when not popped (a read follows a

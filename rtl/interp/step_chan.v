@@ -10,7 +10,8 @@
 //
 // Each interval is a down-counter loaded when it starts (the high time at
 // the rising edge, space and hold at the falling edge, setup at the DIR
-// change) and counting to 0; an interval of n clocks has passed when the
+// change; high time, hold and setup share one counter: they follow each
+// other) and counting to 0; an interval of n clocks has passed when the
 // counter, loaded with n in the first clock of the interval, is <= 1.
 // That test is a registered flag beside each counter (formed from the value
 // loaded, or from "<= 2" before a count), so no counter's compare sits in
@@ -27,6 +28,11 @@ module step_chan #(
     input  wire [TW-1:0] i_space,
     input  wire [TW-1:0] i_setup,
     input  wire [TW-1:0] i_hold,
+    // Each timing value <= 1 (step_out forms them once for both channels).
+    input  wire          i_len_le1,
+    input  wire          i_space_le1,
+    input  wire          i_setup_le1,
+    input  wire          i_hold_le1,
     input  wire          i_take,
     input  wire          i_neg,
     output wire          o_ready,
@@ -36,23 +42,27 @@ module step_chan #(
 
   reg pend_q;          // a pulse is waiting or being emitted
   reg want_q;          // its direction
-  reg [TW-1:0] high_q; // STEP high clocks left, this one included
+  // One counter for the intervals that follow each other: the STEP high
+  // time (from a rise), the DIR hold (from a fall) and the DIR setup (from
+  // a DIR change, which needs the hold passed). A rise may come while the
+  // hold still counts (no DIR change wanted): the hold is then abandoned,
+  // DIR cannot change while STEP is high, and the next fall starts it
+  // again. Clocks left, this one included.
+  reg [TW-1:0] cnt_q;
+  reg setup_q;         // cnt_q counts a DIR setup (from a DIR change to the rise)
   reg [TW-1:0] spc_q;  // STEP low clocks still required, this one included
-  reg [TW-1:0] hld_q;  // clocks before DIR may change, this one included
-  reg [TW-1:0] set_q;  // clocks before STEP may rise after DIR, this one included
 
-  // The flags: the counter beside each is <= 1.
-  reg high_last, space_ok, hold_ok, setup_ok;
-  // v <= 1 (given v's bits above bit 0), v <= 2.
-  function automatic le1(input [TW-2:0] v_hi);
-    le1 = (v_hi == 0);
-  endfunction
+  // The flags: the counter beside each is <= 1. cnt_ok is the high time's
+  // "last clock" while STEP is high, "hold passed" after a fall, "setup
+  // passed" after a DIR change.
+  reg cnt_ok, space_ok;
+  // v <= 2.
   function automatic le2(input [TW-1:0] v);
     le2 = (v[TW-1:2] == 0) & ~(v[1] & v[0]);
   endfunction
-  wire change_dir = pend_q & ~o_step & (o_dir != want_q) & hold_ok;
-  wire rise = pend_q & ~o_step & (o_dir == want_q) & space_ok & setup_ok;
-  wire fall = o_step & high_last;
+  wire change_dir = pend_q & ~o_step & (o_dir != want_q) & cnt_ok;
+  wire rise = pend_q & ~o_step & (o_dir == want_q) & space_ok & (~setup_q | cnt_ok);
+  wire fall = o_step & cnt_ok;
 
   assign o_ready = ~pend_q;
 
@@ -76,17 +86,26 @@ module step_chan #(
     else if (fall) o_step <= 1'b0;
   end
 
-  // High time left.
+  // High time left / hold / setup still required.
   always @(posedge i_clk) begin
     if (i_rst) begin
-      high_q <= {TW{1'b0}};
-      high_last <= 1'b1;
+      cnt_q <= {TW{1'b0}};
+      cnt_ok <= 1'b1;
+      setup_q <= 1'b0;
     end else if (rise) begin
-      high_q <= i_len;
-      high_last <= le1(i_len[TW-1:1]);
-    end else if (o_step & ~high_last) begin
-      high_q <= high_q - 1'b1;
-      high_last <= le2(high_q);
+      cnt_q <= i_len;
+      cnt_ok <= i_len_le1;
+      setup_q <= 1'b0;
+    end else if (fall) begin
+      cnt_q <= i_hold;
+      cnt_ok <= i_hold_le1;
+    end else if (change_dir) begin
+      cnt_q <= i_setup;
+      cnt_ok <= i_setup_le1;
+      setup_q <= 1'b1;
+    end else if (~cnt_ok) begin
+      cnt_q <= cnt_q - 1'b1;
+      cnt_ok <= le2(cnt_q);
     end
   end
 
@@ -97,41 +116,17 @@ module step_chan #(
       space_ok <= 1'b1;
     end else if (fall) begin
       spc_q <= i_space;
-      space_ok <= le1(i_space[TW-1:1]);
+      space_ok <= i_space_le1;
     end else if (~space_ok) begin
       spc_q <= spc_q - 1'b1;
       space_ok <= le2(spc_q);
     end
   end
 
-  // Hold time still required.
+  // DIR.
   always @(posedge i_clk) begin
-    if (i_rst) begin
-      hld_q <= {TW{1'b0}};
-      hold_ok <= 1'b1;
-    end else if (fall) begin
-      hld_q <= i_hold;
-      hold_ok <= le1(i_hold[TW-1:1]);
-    end else if (~hold_ok) begin
-      hld_q <= hld_q - 1'b1;
-      hold_ok <= le2(hld_q);
-    end
-  end
-
-  // DIR and the setup time still required.
-  always @(posedge i_clk) begin
-    if (i_rst) begin
-      o_dir <= 1'b0;
-      set_q <= {TW{1'b0}};
-      setup_ok <= 1'b1;
-    end else if (change_dir) begin
-      o_dir <= want_q;
-      set_q <= i_setup;
-      setup_ok <= le1(i_setup[TW-1:1]);
-    end else if (~setup_ok) begin
-      set_q <= set_q - 1'b1;
-      setup_ok <= le2(set_q);
-    end
+    if (i_rst) o_dir <= 1'b0;
+    else if (change_dir) o_dir <= want_q;
   end
 
 endmodule

@@ -45,15 +45,23 @@ module step_out #(
   assign o_cmd = i_cmd & ready_q;
   wire overrun = i_cmd & ~ready_q & i_busy;
 
+  // Each timing value <= 1 (0 acts as 1), for both channels.
+  wire len_le1 = (i_len[TW-1:1] == 0);
+  wire space_le1 = (i_space[TW-1:1] == 0);
+  wire setup_le1 = (i_setup[TW-1:1] == 0);
+  wire hold_le1 = (i_hold[TW-1:1] == 0);
+
   step_chan #(.TW(TW)) u_x (
       .i_clk(i_clk), .i_rst(i_rst), .i_len(i_len), .i_space(i_space), .i_setup(i_setup),
-      .i_hold(i_hold), .i_take(i_pulse & ~i_pulse_y), .i_neg(i_pulse_neg), .o_ready(rdy_x),
+      .i_hold(i_hold), .i_len_le1(len_le1), .i_space_le1(space_le1), .i_setup_le1(setup_le1),
+      .i_hold_le1(hold_le1), .i_take(i_pulse & ~i_pulse_y), .i_neg(i_pulse_neg), .o_ready(rdy_x),
       .o_step(o_step_x), .o_dir(o_dir_x)
   );
 
   step_chan #(.TW(TW)) u_y (
       .i_clk(i_clk), .i_rst(i_rst), .i_len(i_len), .i_space(i_space), .i_setup(i_setup),
-      .i_hold(i_hold), .i_take(i_pulse & i_pulse_y), .i_neg(i_pulse_neg), .o_ready(rdy_y),
+      .i_hold(i_hold), .i_len_le1(len_le1), .i_space_le1(space_le1), .i_setup_le1(setup_le1),
+      .i_hold_le1(hold_le1), .i_take(i_pulse & i_pulse_y), .i_neg(i_pulse_neg), .o_ready(rdy_y),
       .o_step(o_step_y), .o_dir(o_dir_y)
   );
 

@@ -153,7 +153,7 @@ mutants=(
   "interp_dp.v|arcs|crossing leaves k unchanged|s/k_q <= k_q - 1'b1;/k_q <= k_q;/"
   "interp_dp.v|arcs|end-point rule compares co with to - 1|s/wire inw = kz ? (d_pos ? ~in_ex_q : out_ex_q) : d_pos;/wire inw = kz ? (d_pos ? ~in_ex_q : out_one_q) : d_pos;/"
   "blk_prep.v|arcs|end quadrant's inward axis ignores the parity of k|s/wire in_xe = in_x0 ^ k\[0\];/wire in_xe = in_x0;/"
-  "blk_prep.v|lines|line flag 'no X distance left' from the Y target|s/assign flags\[0\] = (ci2_q == ti2s_q);/assign flags[0] = (ci2_q == to2s_q);/"
+  "blk_prep.v|lines|line flag 'no X distance left' from the Y target|s/flags2_q\[0\] <= (ci1_q == ti1s_q);/flags2_q[0] <= (ci1_q == to1s_q);/"
 )
 
 mutant_run() {
