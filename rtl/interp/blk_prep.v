@@ -82,7 +82,7 @@ module blk_prep #(
   // The fields with an adder or a comparator: SUB, the per-move constants
   // and the flags, registered from stage 1 (o_wr_late, the clock after
   // o_wr). The two flags that compare with a value one off (ci - 1 == ti,
-  // co == to - 1) use eq_inc below, so no adder sits before their
+  // co == to - 1) use inc_terms below, so no adder sits before their
   // comparators.
   wire [W+1:0] ti = {2'b00, ti1s_q};
   wire [W+1:0] to = {2'b00, to1s_q};
