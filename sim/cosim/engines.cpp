@@ -459,6 +459,12 @@ void IssCosimEngine::begin_case(const Case& c) {
 
 void IssCosimEngine::feed() {
   while (next_move_ < moves_.size() && host_->slot_free(next_slot_)) {
+    // A line of more than 65536 P steps runs as segments (sw8085::Host::pump),
+    // which this engine does not queue: an error of the run, not a wrong one.
+    if (sw8085::segments(moves_[next_move_].move) > 1) {
+      error_ = describe(moves_[next_move_].move) + ": a line of more than 65536 P steps (segments) is not co-simulated";
+      return;
+    }
     queued_.push_back(std::make_unique<sw8085::SlotMove>(host_->queue(moves_[next_move_].move)));
     slot_move_[next_slot_] = static_cast<int>(queued_.size() - 1);
     next_slot_ ^= 1;
@@ -689,8 +695,12 @@ void BoardCosimEngine::host_thread() {
       request_ = Request::None;
       reply_.notify(SC_ZERO_TIME);
     } else if (active_ && error_.empty() && next_move_ < moves_.size()) {
-      if (slot_free(next_slot_)) queue_next();
-      else if (waited_ < next_move_ + 1) ++events_["queue_full"], waited_ = next_move_ + 1;  // both slots busy
+      try {  // sw8085::encode refuses a line of more than 65536 P steps (segments)
+        if (slot_free(next_slot_)) queue_next();
+        else if (waited_ < next_move_ + 1) ++events_["queue_full"], waited_ = next_move_ + 1;  // both slots busy
+      } catch (const std::exception& e) {
+        error_ = e.what();
+      }
     } else {
       sc_core::wait(request_ev_);
     }

@@ -130,19 +130,37 @@ void Host::boot() {
   bus_.outs.clear();
 }
 
-SlotMove Host::queue(const Move& m) {
-  validate<24>(m);
+SlotMove Host::write(const Move& m, int segment) {
   const std::uint8_t base = kSlots[next_slot_];
-  auto& held = slots_[next_slot_];
-  if (!slot_free(next_slot_))
-    throw std::logic_error("sw8085: slot " + std::to_string(base) + " still holds " + describe(held->move));
   auto mb = bus_.mailbox();
-  SlotMove sm = encode(m, base, codes_, mb);
+  SlotMove sm = encode_segment(m, segment, base, codes_, mb);
   mb[static_cast<std::uint8_t>(base + kStatus)] = kQueued;
-  held = sm;
+  slots_[next_slot_] = sm;
   next_slot_ ^= 1;
   return sm;
 }
+
+SlotMove Host::queue(const Move& m) {
+  validate<24>(m);
+  const std::uint8_t base = kSlots[next_slot_];
+  if (!pending_.empty())
+    throw std::logic_error("sw8085: segments of " + describe(pending_.front().move) + " still wait for a slot");
+  if (!slot_free(next_slot_))
+    throw std::logic_error("sw8085: slot " + std::to_string(base) + " still holds " + describe(slots_[next_slot_]->move));
+  const SlotMove sm = write(m, 0);
+  for (int i = 1; i < sm.segments; ++i) pending_.push_back({m, i});
+  return sm;
+}
+
+std::vector<SlotMove> Host::pump() {
+  std::vector<SlotMove> w;
+  std::size_t i = 0;
+  for (; i < pending_.size() && slot_free(next_slot_); ++i) w.push_back(write(pending_[i].move, pending_[i].segment));
+  pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(i));
+  return w;
+}
+
+bool Host::can_queue() const { return pending_.empty() && slot_free(next_slot_); }
 
 CommandResult Host::command() {
   CommandResult r;
@@ -225,22 +243,36 @@ RunResult Host::run(const Move& m, std::vector<CommandResult>* commands, std::ui
     r.final_state = r.initial_state;
     return r;
   }
-  const SlotMove sm = queue(m);
+  // A line of more than line::kSegment P steps runs as segments, queued one
+  // after the other (the next one always waits in the other slot, armed by
+  // the main loop: settle()); the state after a pulse is the running
+  // segment's, in the whole move's terms.
+  std::vector<SlotMove> segs{queue(m)};
+  for (const auto& s : pump()) segs.push_back(s);
   settle();  // the main loop starts the move before the first command pulse
-  r.initial_state = state(sm, 0);
+  r.initial_state = state(segs[0], 0);
   const std::uint64_t bound = max_pulses ? max_pulses : pulse_bound(m);
   std::uint64_t n = 0;
-  while (!done(sm)) {
+  for (std::size_t cur = 0; !done(segs[cur]);) {
     const CommandResult c = command();
     if (!c.pulse)
       throw std::logic_error("sw8085: command pulse " + std::to_string(n + 1) + " of " + describe(m) +
                              " gave no output pulse");
     ++n;
-    r.final_state = state(sm, n);
+    r.final_state = state(segs[cur], n);
     if (on_step) on_step({*c.pulse, r.final_state});
     else r.steps.push_back({*c.pulse, r.final_state});
     if (commands) commands->push_back(c);
     if (n > bound) throw std::logic_error("sw8085: " + describe(m) + " did not end after " + std::to_string(n) + " pulses");
+    // A segment that ended hands over to the next one (already waiting in
+    // the other slot); its own slot is free for the one after.
+    if (done(segs[cur]) && !segs[cur].last() && ++cur >= segs.size())
+      throw std::logic_error("sw8085: the next segment of " + describe(m) + " was not queued");
+    const auto w = pump();
+    if (!w.empty()) {
+      segs.insert(segs.end(), w.begin(), w.end());
+      settle();  // the main loop arms it
+    }
   }
   if (n == 0) r.final_state = r.initial_state;
   return r;
@@ -255,10 +287,12 @@ Host::Timed Host::drive(const std::vector<Move>& moves, double period, std::vect
   std::uint64_t bound = 0;
   for (const auto& m : moves) bound += pulse_bound(m);
   auto feed = [&] {
-    while (next < moves.size() && slot_free(next_slot_)) {
+    for (const auto& s : pump()) last = s;
+    while (next < moves.size() && can_queue()) {
       const Move& m = moves[next++];
       if (!m.is_arc() && m.xe == 0 && m.ye == 0) continue;
       last = queue(m);
+      for (const auto& s : pump()) last = s;
     }
   };
   auto count = [&] {
@@ -279,7 +313,7 @@ Host::Timed Host::drive(const std::vector<Move>& moves, double period, std::vect
   bus_.outs.clear();
   while (true) {
     feed();
-    if (next == moves.size() && (!last || done(*last))) {
+    if (next == moves.size() && pending_.empty() && (!last || done(*last))) {
       res.all_done = true;
       break;
     }

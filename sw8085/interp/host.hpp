@@ -71,9 +71,16 @@ class Host {
   explicit Host(const Program& p = Program::builtin(), const i8085::MachineFactory& factory = i8085::make_iss);
 
   // Queues a move (validated at W = 24: throws InputError) in the next slot.
-  // Throws std::logic_error if that slot still holds a move not finished.
-  // A move that is done at once (a line to (0, 0)) is not queued.
+  // Throws std::logic_error if that slot still holds a move not finished
+  // (or a move's segments still wait: !can_queue()). A move that is done at
+  // once (a line to (0, 0)) is not queued. A line of more than
+  // line::kSegment P steps runs as segments: its first one is queued and
+  // returned, the others wait for pump().
   SlotMove queue(const Move& m);
+  // Writes the waiting segments into the slots as they become free (in
+  // order); returns those written.
+  std::vector<SlotMove> pump();
+  bool can_queue() const;
 
   // One command pulse: a rising edge on RST 7.5, then the CPU runs until its
   // interrupt routine has returned. Throws std::runtime_error on a bus fault
@@ -121,6 +128,12 @@ class Host {
   std::uint16_t sp_idle_ = 0;
   int next_slot_ = 0;
   std::array<std::optional<SlotMove>, 2> slots_;
+  struct Segment {
+    Move move;
+    int segment;
+  };
+  std::vector<Segment> pending_;  // segments not yet written, in order
+  SlotMove write(const Move& m, int segment);
 };
 
 // The program as a contour Engine ("iss": on the ISS; "cpu": on the

@@ -1,5 +1,6 @@
 #include "mailbox.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "interp/circular.hpp"
@@ -76,49 +77,105 @@ std::optional<Pulse> decode_pattern(std::uint8_t v) {
   return Pulse{Axis::Y, static_cast<std::int8_t>((v & 0x08) ? -1 : +1)};
 }
 
+namespace {
+
+// A line in the program's terms (mailbox.hpp): P, Q magnitudes and
+// patterns, the P steps, and d0, the program's D at the start: the
+// program's D is p*Qpos - q*Ppos + d0 at every point of the walk.
+struct LineGeom {
+  std::int64_t a, b, p, q, psteps, d0;
+  bool swapped, one;
+  std::int8_t sx, sy;
+  std::uint8_t pat_p, pat_q;
+};
+
+LineGeom line_geom(const Move& m) {
+  LineGeom g{};
+  g.a = abs64(m.xe);
+  g.b = abs64(m.ye);
+  if (g.a == 0 && g.b == 0) throw std::logic_error("sw8085::encode: a line of length 0 is done at once, not queued");
+  g.sx = m.xe < 0 ? -1 : +1;
+  g.sy = m.ye < 0 ? -1 : +1;
+  // P: the axis stepped when D >= 0 and the last one stepped (X iff
+  // |YE| < |XE|: the walk reaches (A - 1, B) then, else (A, B - 1)).
+  g.swapped = g.a > 0 && g.b > 0 && g.b >= g.a;
+  g.one = g.a == 0 || g.b == 0;
+  // One axis: P and Q are the same axis, |P| = |Q| = 1, D = 0 / -1 with
+  // P stepping from D = 0: P's steps are every other pulse, the last one
+  // P's, so a line of n pulses starts from D = -1 if n is even.
+  const std::int64_t n = g.a + g.b;
+  g.p = g.one ? 1 : g.swapped ? g.b : g.a;
+  g.q = g.one ? 1 : g.swapped ? g.a : g.b;
+  g.psteps = g.one ? (n + 1) / 2 : g.p;
+  g.d0 = (g.one ? n % 2 == 0 : g.swapped) ? -1 : 0;
+  g.pat_p = g.one ? (g.a == 0 ? pattern(Axis::Y, g.sy) : pattern(Axis::X, g.sx))
+                  : g.swapped ? pattern(Axis::Y, g.sy) : pattern(Axis::X, g.sx);
+  g.pat_q = g.one ? g.pat_p : g.swapped ? pattern(Axis::X, g.sx) : pattern(Axis::Y, g.sy);
+  return g;
+}
+
+// The program's D right after the P step that brings P to `pp` (pp >= 1):
+// Q steps come while D < 0 and stop as soon as D >= 0, so before that P
+// step Q is the least Qpos with p*Qpos - q*(pp - 1) + d0 >= 0; for pp = 0
+// the start, d0.
+std::int64_t line_d_after_p(const LineGeom& g, std::int64_t pp) {
+  if (pp == 0) return g.d0;
+  const std::int64_t num = g.q * (pp - 1) - g.d0;  // >= 0
+  const std::int64_t qpos = (num + g.p - 1) / g.p;
+  return g.p * qpos - g.q * pp + g.d0;
+}
+
+}  // namespace
+
+int segments(const Move& m) {
+  if (m.is_arc() || (m.xe == 0 && m.ye == 0)) return 1;
+  const std::int64_t ps = line_geom(m).psteps;
+  return static_cast<int>((ps + line::kSegment - 1) / line::kSegment);
+}
+
 SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<std::uint8_t, 256> mb) {
+  if (segments(m) != 1)
+    throw std::logic_error("sw8085::encode: " + describe(m) + " has more than " + std::to_string(line::kSegment) +
+                           " P steps: it runs as segments (encode_segment)");
+  return encode_segment(m, 0, base, codes, mb);
+}
+
+SlotMove encode_segment(const Move& m, int segment, std::uint8_t base, const Codes& codes,
+                        std::span<std::uint8_t, 256> mb) {
   SlotMove sm;
   sm.move = m;
   sm.base = base;
   sm.arc = m.is_arc();
   if (!sm.arc) {
-    const std::int64_t a = abs64(m.xe), b = abs64(m.ye);
-    if (a == 0 && b == 0) throw std::logic_error("sw8085::encode: a line of length 0 is done at once, not queued");
-    sm.a = a;
-    sm.b = b;
-    sm.sx = m.xe < 0 ? -1 : +1;
-    sm.sy = m.ye < 0 ? -1 : +1;
-    // P: the axis stepped when D >= 0 and the last one stepped (X iff
-    // |YE| < |XE|: the walk reaches (A - 1, B) then, else (A, B - 1)).
-    sm.swapped = a > 0 && b > 0 && b >= a;
-    const bool swap = sm.swapped, one = a == 0 || b == 0;
-    // One axis: P and Q are the same axis, |P| = |Q| = 1, D = 0 / -1 with
-    // P stepping from D = 0: P's steps are every other pulse, the last one
-    // P's, so a line of n pulses starts from D = -1 if n is even.
-    const std::int64_t n = a + b;
-    const std::int64_t p = one ? 1 : swap ? b : a, q = one ? 1 : swap ? a : b;
-    const std::int64_t psteps = one ? (n + 1) / 2 : p;
-    const bool start_neg = one ? n % 2 == 0 : swap;
-    mb[at(base, kMode)] = start_neg ? line::kModeNeg : line::kModeNonNeg;
-    put24(mb, at(base, line::kD), start_neg ? 0xFFFFFF : 0);  // D = 0; swapped: -D - 1 = -1
-    const std::int64_t blocks = (psteps - 1) >> 16, rest = psteps - 65536 * blocks;
-    mb[at(base, line::kC[0])] = static_cast<std::uint8_t>(((rest - 1) & 0xFF) + 1);
-    mb[at(base, line::kC[1])] = static_cast<std::uint8_t>(((rest - 1) >> 8) + 1);
-    mb[at(base, line::kC[2])] = static_cast<std::uint8_t>(blocks + 1);  // 256 blocks: 0
-    const std::uint8_t pp = one ? (a == 0 ? pattern(Axis::Y, sm.sy) : pattern(Axis::X, sm.sx))
-                                : swap ? pattern(Axis::Y, sm.sy) : pattern(Axis::X, sm.sx);
-    mb[at(base, line::kPatP)] = pp;
-    mb[at(base, line::kPatB)] = pp;
-    mb[at(base, line::kPatE)] = pp;
-    mb[at(base, line::kPatQ)] = one ? pp : swap ? pattern(Axis::X, sm.sx) : pattern(Axis::Y, sm.sy);
-    const auto nq = static_cast<std::uint32_t>(-q & 0xFFFFFF);
-    for (int i = 0; i < 3; ++i) {
-      mb[at(base, line::kNegQ - i)] = static_cast<std::uint8_t>(nq >> (8 * i));
-      mb[at(base, line::kNegQB - i)] = static_cast<std::uint8_t>(nq >> (8 * i));
-    }
-    put24(mb, at(base, line::kA), static_cast<std::uint32_t>(p));
+    const LineGeom g = line_geom(m);
+    sm.a = g.a;
+    sm.b = g.b;
+    sm.sx = g.sx;
+    sm.sy = g.sy;
+    sm.swapped = g.swapped;
+    sm.psteps = g.psteps;
+    sm.segments = segments(m);
+    if (segment < 0 || segment >= sm.segments)
+      throw std::logic_error("sw8085::encode_segment: " + describe(m) + " has no segment " + std::to_string(segment));
+    sm.segment = segment;
+    sm.seg_first = line::kSegment * segment;
+    sm.seg_len = std::min(line::kSegment, g.psteps - sm.seg_first);
+    // The segment starts where the walk is after the P step that ends the
+    // segment before it (the start of the line for the first one).
+    const std::int64_t d = line_d_after_p(g, sm.seg_first);
+    mb[at(base, kMode)] = d < 0 ? line::kModeNeg : line::kModeNonNeg;
+    put24(mb, at(base, line::kD), static_cast<std::uint32_t>(d & 0xFFFFFF));
+    mb[at(base, line::kC[0])] = static_cast<std::uint8_t>(((sm.seg_len - 1) & 0xFF) + 1);
+    mb[at(base, line::kC[1])] = static_cast<std::uint8_t>(((sm.seg_len - 1) >> 8) + 1);  // 65536: 0, 0
+    mb[at(base, line::kPatP)] = g.pat_p;
+    mb[at(base, line::kPatE)] = g.pat_p;
+    mb[at(base, line::kPatQ)] = g.pat_q;
+    const auto nq = static_cast<std::uint32_t>(-g.q & 0xFFFFFF);
+    for (int i = 0; i < 3; ++i) mb[at(base, line::kNegQ - i)] = static_cast<std::uint8_t>(nq >> (8 * i));
+    put24(mb, at(base, line::kA), static_cast<std::uint32_t>(g.p));
     return sm;
   }
+  if (segment != 0) throw std::logic_error("sw8085::encode_segment: an arc has one segment");
   const auto plan = Circular<24>::validate(m.xs, m.ys, m.xe, m.ye, m.sense);
   const int q = plan.q_start;
   const bool ix = inward_is_x(q, m.sense);
@@ -201,6 +258,38 @@ SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<
 
 namespace {
 
+// A line's state from the program's D (dp) and P's steps left in the
+// whole move: Q's position follows from D.
+template <class Bad>
+State decode_line_at(const SlotMove& sm, State s, std::int64_t dp, std::int64_t pleft, const Bad& bad) {
+  const std::int64_t a = sm.a, b = sm.b;
+  const bool one = a == 0 || b == 0;
+  std::int64_t x, y;
+  s.d = sm.swapped ? -dp - 1 : dp;
+  if (one) {
+    // D goes 0, -1, 0, ...: -1 when a Q pulse (the same axis) comes next.
+    if (s.d != 0 && s.d != -1) throw bad("D is neither 0 nor -1 on a one-axis line");
+    const std::int64_t left = 2 * pleft - (s.d == 0 ? 1 : 0);
+    if (left > a + b) throw bad("distance left exceeds the move");
+    x = a == 0 ? 0 : a - left;
+    y = a == 0 ? b - left : 0;
+    s.d = 0;
+  } else {
+    // D = a*y - b*x: the other coordinate follows, exactly or not at all.
+    const std::int64_t pmag = sm.swapped ? b : a;
+    if (pleft > pmag) throw bad("distance left exceeds the move");
+    const std::int64_t pp = pmag - pleft;
+    const std::int64_t num = sm.swapped ? a * pp - s.d : s.d + b * pp, den = pmag;
+    if (num % den != 0 || num / den < 0 || num / den > (sm.swapped ? a : b))
+      throw bad("D = " + std::to_string(s.d) + " is no point of the line at " + std::to_string(pp) + " on P");
+    x = sm.swapped ? num / den : pp;
+    y = sm.swapped ? pp : num / den;
+  }
+  s.x = sm.sx * x;
+  s.y = sm.sy * y;
+  return s;
+}
+
 // A line's state: D from MODE and its 3 bytes; the distance travelled on
 // the counted axis (P, or the only one) from its counter; Q's from D.
 template <class Bad>
@@ -213,46 +302,32 @@ State decode_line(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, Sta
   else if (mode == line::kModeNeg) neg = true;
   else if (mode == line::done_code(base)) s.done = true;
   else throw bad("no line state has this MODE");
-  const std::int64_t a = sm.a, b = sm.b;
-  const bool one = a == 0 || b == 0;
-  std::int64_t x, y;
+  if (s.done && !sm.last()) {
+    // A finished segment (not the move's last): its last pulse skipped the
+    // D update; the walk is right after the P step that ended it.
+    s.done = false;
+    const LineGeom g = line_geom(sm.move);
+    const std::int64_t dp = line_d_after_p(g, sm.seg_first + sm.seg_len);
+    return decode_line_at(sm, s, dp, g.psteps - sm.seg_first - sm.seg_len, bad);
+  }
   if (s.done) {
     // A finished line is at its end point, where D = 0: its last pulse
     // skips the D update (the done code says it), so no byte is read.
     s.d = 0;
-    x = a;
-    y = b;
-  } else {
+    s.x = sm.sx * sm.a;
+    s.y = sm.sy * sm.b;
+    return s;
+  }
+  {
     const std::int64_t d24 = get24(mb, at(base, line::kD));
     const std::int64_t dp = neg ? d24 - (std::int64_t{1} << 24) : d24;
-    s.d = sm.swapped ? -dp - 1 : dp;
-    // P's steps left: c0, c1, c2 as nested loops (0 counts as 256).
+    // P's steps left: c0, c1 as nested loops (0 counts as 256), and those
+    // of the segments after this one.
     auto d = [](std::uint8_t v) { return std::int64_t{v == 0 ? 256 : v}; };
-    const std::int64_t pleft = d(mb[at(base, line::kC[0])]) + 256 * (d(mb[at(base, line::kC[1])]) - 1) +
-                               65536 * (d(mb[at(base, line::kC[2])]) - 1);
-    if (one) {
-      // D goes 0, -1, 0, ...: -1 when a Q pulse (the same axis) comes next.
-      if (s.d != 0 && s.d != -1) throw bad("D is neither 0 nor -1 on a one-axis line");
-      const std::int64_t left = 2 * pleft - (s.d == 0 ? 1 : 0);
-      if (left > a + b) throw bad("distance left exceeds the move");
-      x = a == 0 ? 0 : a - left;
-      y = a == 0 ? b - left : 0;
-      s.d = 0;
-    } else {
-      // D = a*y - b*x: the other coordinate follows, exactly or not at all.
-      const std::int64_t pmag = sm.swapped ? b : a;
-      if (pleft > pmag) throw bad("distance left exceeds the move");
-      const std::int64_t pp = pmag - pleft;
-      const std::int64_t num = sm.swapped ? a * pp - s.d : s.d + b * pp, den = pmag;
-      if (num % den != 0 || num / den < 0 || num / den > (sm.swapped ? a : b))
-        throw bad("D = " + std::to_string(s.d) + " is no point of the line at " + std::to_string(pp) + " on P");
-      x = sm.swapped ? num / den : pp;
-      y = sm.swapped ? pp : num / den;
-    }
+    const std::int64_t pleft = d(mb[at(base, line::kC[0])]) + 256 * (d(mb[at(base, line::kC[1])]) - 1);
+    if (pleft > sm.seg_len) throw bad("distance left exceeds the segment");
+    return decode_line_at(sm, s, dp, pleft + sm.psteps - sm.seg_first - sm.seg_len, bad);
   }
-  s.x = sm.sx * x;
-  s.y = sm.sy * y;
-  return s;
 }
 
 }  // namespace

@@ -42,7 +42,7 @@ inline constexpr std::uint8_t kIdleCount = 0x08;  // 2 bytes: command pulses ser
 inline constexpr std::uint8_t kLayout = 0x0A;     // kLayoutVersion
 inline constexpr std::uint8_t kStubs = 0x0B;      // the program's dispatch stubs (JMPs), up to the slots
 inline constexpr std::uint8_t kReadyMagic = 0x5A;
-inline constexpr std::uint8_t kLayoutVersion = 6;
+inline constexpr std::uint8_t kLayoutVersion = 7;
 // The routine that ends a move reads PEND and writes ACTIVE with one DCR L.
 static_assert(kActive + 1 == kPend, "interp.a80 FINISH: MB_ACTIVE must be MB_PEND - 1");
 
@@ -63,21 +63,19 @@ inline constexpr std::uint8_t kQueued = 0x01, kStarted = 0x02;
 // pattern, |P| = |Q| = 1): the program's D goes 0, -1, 0, ... and P counts
 // every other pulse (the contract's D stays 0).
 namespace line {
-// Distance counters: three bytes c0 c1 c2 counting down like nested loops
-// (a stored 0 counts as 256): left = c0 + 256*(c1 - 1) + 65536*(c2 - 1),
-// 0 when all three bytes are 0. P's (the only axis's on a one-axis line).
-// c2 counts the blocks of 65536 P steps left, the current one included: c0
-// and c1 running out with c2 reaching 0 is the last pulse.
-inline constexpr std::array<int, 3> kC = {-1, -2, 0x0B};
+// P's distance counter in the slot: two bytes c0 c1 counting down like
+// nested loops (a stored 0 counts as 256): left = c0 + 256*(c1 - 1), at most
+// kSegment, 0 when both bytes are 0 (the last pulse of the slot's move). A
+// line of more than kSegment P steps runs as segments of at most kSegment
+// P steps, each queued as a move of its own in the next slot and started
+// from the contract's D and position where it begins (encode_segment).
+inline constexpr std::array<int, 2> kC = {-1, -2};
+inline constexpr std::int64_t kSegment = 65536;
 inline constexpr int kNegQ = -3;    // 3 bytes DOWNWARDS (-3, -4, -5): -|Q| mod 2^24
 inline constexpr int kPatP = -6;    // P's pattern
 inline constexpr int kD = 0x01;     // 3 bytes; sign in MODE (0xFF: D >= 0, 0x00: D < 0)
 inline constexpr int kPatQ = 0x04;  // Q's pattern
-// Copies for the block change (it runs the P step's D update from kC[2] - 1
-// down): -|Q| downwards (0x0A, 0x09, 0x08) and P's pattern below it.
-inline constexpr int kNegQB = 0x0A;
-inline constexpr int kPatB = 0x07;
-inline constexpr int kPatE = 0x0C;  // P's pattern, for the last pulse (above kC[2])
+inline constexpr int kPatE = 0x0C;  // P's pattern, for the slot's last pulse
 inline constexpr int kA = 0x10;     // 3 bytes: |P|
 inline constexpr std::uint8_t kModeNonNeg = 0xFF, kModeNeg = 0x00;
 // A finished line's MODE: its slot's base + 1 (the OUT 12h byte; no arc
@@ -147,14 +145,31 @@ struct SlotMove {
   std::int8_t sx = 1, sy = 1;  // line: signs
   std::int64_t a = 0, b = 0;   // line: |XE|, |YE|
   bool swapped = false;        // line: P is Y (the program's D is -D - 1)
+  // line: the P steps of the whole move, and the segment of them this slot
+  // runs (the whole move unless it has more than line::kSegment).
+  std::int64_t psteps = 0, seg_first = 0, seg_len = 0;
+  int segment = 0, segments = 1;
+  bool last() const { return segment + 1 == segments; }
 };
+
+// How many slots a move takes: a line of more than line::kSegment P steps
+// runs as ceil(P steps / kSegment) segments, anything else as one.
+int segments(const Move& m);
 
 // Writes `m` (already validated, not done at once) into the slot at `base`
 // of the mailbox, status not yet queued. Returns what decode() needs.
+// Throws std::logic_error for a move of more than one segment.
 SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<std::uint8_t, 256> mb);
+// The same for segment `segment` (0 .. segments(m) - 1) of `m`: a line's
+// segment starts from the D and the position the contract's walk has after
+// the last P step of the segments before it (computed in closed form).
+SlotMove encode_segment(const Move& m, int segment, std::uint8_t base, const Codes& codes,
+                        std::span<std::uint8_t, 256> mb);
 
 // The contract's observable state of the move in the slot, from the
-// mailbox bytes; `pulses` is the count the host observed. Throws
+// mailbox bytes; `pulses` is the count the host observed. A finished
+// segment that is not the move's last is the state after its last pulse,
+// not done. Throws
 // std::logic_error if the slot holds something no state maps to.
 State decode(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Codes& codes, std::uint64_t pulses);
 

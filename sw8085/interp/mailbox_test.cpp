@@ -3,6 +3,8 @@
 // round-trip.
 #include <gtest/gtest.h>
 
+#include "interp/linear.hpp"
+
 #include <cctype>
 #include <fstream>
 #include <set>
@@ -34,8 +36,8 @@ TEST(Mailbox, OffsetsAreTheProgramsEqus) {
       {"SLOT0", kSlots[0]}, {"SLOT1", kSlots[1]}, {"S_MODE", kMode}, {"S_STATUS", kStatus},
       {"ST_QUEUED", kQueued}, {"ST_STARTED", kStarted},
       {"PSTEP", kPortStep}, {"PEDGES", kPortEdges}, {"PDONE", kPortDone},
-      {"L_D0", line::kD}, {"L_C0", line::kC[0]}, {"L_C1", line::kC[1]}, {"L_C2", line::kC[2]},
-      {"L_NQ", line::kNegQ}, {"L_PATP", line::kPatP}, {"L_PATQ", line::kPatQ}, {"L_PATE", line::kPatE}, {"L_NQB", line::kNegQB}, {"L_PATB", line::kPatB},
+      {"L_D0", line::kD}, {"L_C0", line::kC[0]}, {"L_C1", line::kC[1]},
+      {"L_NQ", line::kNegQ}, {"L_PATP", line::kPatP}, {"L_PATQ", line::kPatQ}, {"L_PATE", line::kPatE},
       {"L_A", line::kA},
       {"A_D0", arc::kD}, {"A_CX", arc::kCx}, {"A_CY", arc::kCy},
       {"A_RX0", arc::kRx[0]}, {"A_RX1", arc::kRx[1]}, {"A_RX2", arc::kRx[2]},
@@ -84,8 +86,10 @@ TEST(Mailbox, CodesAreDistinctAndDispatchable) {
   EXPECT_GT(c.idle, kLayout);
 }
 
-// Distance counters across their byte boundaries: a line (v, 1) queued and
-// decoded at once has x = 0, i.e. the distance left decodes back to v.
+// Distance counters across their byte boundaries: a line (v, -v) queued
+// and decoded at once has x = 0, i.e. the distance left decodes back to v;
+// a line of more than 65536 P steps runs as segments, and segment k
+// starts at P = 65536 k (the line (v, -v) steps X first: x = -y there).
 TEST(Mailbox, DistanceCountersRoundTrip) {
   const Codes c = Codes::from_symbols(Program::builtin().symbols);
   std::array<std::uint8_t, 256> mb{};
@@ -93,12 +97,57 @@ TEST(Mailbox, DistanceCountersRoundTrip) {
   for (std::int64_t v : {std::int64_t{1}, std::int64_t{2}, std::int64_t{255}, std::int64_t{256}, std::int64_t{257},
                          std::int64_t{65535}, std::int64_t{65536}, std::int64_t{65537}, std::int64_t{16711680},
                          std::int64_t{16711681}, max - 1, max}) {
-    const SlotMove sm = encode(Move::line(v, -v), kSlots[1], c, mb);
-    const State s = decode(sm, mb, c, 0);
-    EXPECT_EQ(s.x, 0) << v;
-    EXPECT_EQ(s.y, 0) << v;
-    EXPECT_EQ(s.d, 0) << v;
-    EXPECT_FALSE(s.done) << v;
+    const Move m = Move::line(v, -v);
+    const int n = segments(m);
+    EXPECT_EQ(n, (v + 65535) / 65536) << v;
+    if (n > 1) {
+      EXPECT_THROW(encode(m, kSlots[1], c, mb), std::logic_error) << v;
+    }
+    for (int k : {0, 1, n - 2, n - 1}) {
+      if (k < 0 || k >= n) continue;
+      const SlotMove sm = encode_segment(m, k, kSlots[1], c, mb);
+      EXPECT_EQ(sm.last(), k == n - 1) << v;
+      const State s = decode(sm, mb, c, 0);
+      EXPECT_EQ(s.x, 65536 * k) << v << " segment " << k;
+      EXPECT_EQ(s.y, -65536 * k) << v << " segment " << k;
+      EXPECT_EQ(s.d, 0) << v;
+      EXPECT_FALSE(s.done) << v;
+    }
+  }
+}
+
+// Where a line's segment starts (the D and position the host computes in
+// closed form) and where the segment before it ends (its done code: the
+// program skips the D update of its last pulse) are states of the model's
+// walk (Linear<24>), in order; the last segment's end is the move's.
+TEST(Mailbox, LineSegmentsStartOnTheModelsWalk) {
+  const Codes c = Codes::from_symbols(Program::builtin().symbols);
+  for (const Move& m : {Move::line(200001, -77777), Move::line(-77777, 200001), Move::line(150000, 149999),
+                        Move::line(-131073, 131073), Move::line(0, -262147), Move::line(131075, 0),
+                        Move::line(196608, 65536)}) {
+    const int n = segments(m);
+    ASSERT_GT(n, 1) << describe(m);
+    Linear<24> walk(m.xe, m.ye);
+    std::uint64_t pulses = 0;
+    for (int k = 0; k < n; ++k) {
+      std::array<std::uint8_t, 256> mb{};
+      const SlotMove sm = encode_segment(m, k, kSlots[k % 2], c, mb);
+      State start = decode(sm, mb, c, 0);
+      // The model walks on until it is where the segment starts.
+      while (!walk.done() && !(walk.state().x == start.x && walk.state().y == start.y)) walk.step(), ++pulses;
+      start.pulses = pulses;
+      ASSERT_EQ(start, walk.state()) << describe(m) << " segment " << k << ": got " << to_string(start);
+      // That segment's own end: the slot says done.
+      mb[kSlots[k % 2]] = line::done_code(kSlots[k % 2]);
+      const State end = decode(sm, mb, c, 0);
+      Linear<24> ahead = walk;
+      std::uint64_t more = 0;
+      while (!ahead.done() && !(ahead.state().x == end.x && ahead.state().y == end.y)) ahead.step(), ++more;
+      State want = ahead.state();
+      want.pulses = 0;
+      ASSERT_EQ(end, want) << describe(m) << " end of segment " << k << ": got " << to_string(end);
+      EXPECT_EQ(end.done, k == n - 1) << describe(m);
+    }
   }
 }
 

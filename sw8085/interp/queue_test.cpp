@@ -191,6 +191,25 @@ TEST(Overrun, TooFastCommandsAreCountedNeverSilentlyLost) {
   EXPECT_EQ(pulses, want);
 }
 
+// A line of more than 65536 P steps runs as segments (three here, the
+// second one switched in while the command train runs), then the next
+// move: at a rate the program keeps up with, no command is lost or idle
+// between the segments, and the pulses are the model's.
+TEST(Queue, LongLineRunsAsSegmentsBackToBack) {
+  Host h;
+  const std::vector<Move> moves = {Move::line(-131075, 77), Move::line(3, 5), Move::line(0, -131074)};
+  std::vector<Pulse> pulses;
+  const Host::Timed t = h.drive(moves, 260.0, &pulses);
+  ASSERT_TRUE(t.all_done);
+  EXPECT_EQ(t.overruns, 0u);
+  EXPECT_EQ(t.idle_commands, 0u);
+  EXPECT_EQ(t.commands, t.pulses);
+  std::vector<Pulse> want;
+  for (const auto& m : moves)
+    for (const auto& s : run_model<24>(m).steps) want.push_back(s.pulse);
+  EXPECT_EQ(pulses, want);
+}
+
 TEST(Overrun, SlowEnoughCommandsLoseNone) {
   Host h;
   const std::vector<Move> moves = {Move::line(300, -211), Move::arc(40, 9, -9, 40, Sense::CCW)};
