@@ -37,7 +37,7 @@ int run_cosim_command(const std::vector<std::string>& args) {
   if (::access(prog.c_str(), X_OK) != 0) {
     for (const auto& a : args)
       if (a == "--help" || a == "-h") {
-        std::printf("usage: contour cosim --suite paper|smoke|full (--rate R | --sweep) [--report DIR] [--trace]\n"
+        std::printf("usage: contour cosim --suite paper|smoke|full|long (--rate R | --sweep) [--report DIR] [--trace]\n"
                     "  command rates: the core up to 25M pps, the 8085 engines up to 250k (docs/cosim.md)\n"
                     "  (the co-simulation program %s is not built: it needs Verilator and SystemC)\n",
                     prog.c_str());

@@ -439,6 +439,23 @@ TEST(CosimRun, ReducedSweepOfThePaperSuite) {
   }
 }
 
+// A line of more than 65 536 P steps: the 8085's host runs it as two
+// segments, one mailbox slot each, back to back; both 8085 engines agree
+// with the model pulse by pulse and end on the line's end point.
+TEST(CosimRun, LongLineRunsAsSegmentsOnBoth8085Engines) {
+  Options o;
+  o.suite = "long";
+  o.rates = {12e3};
+  o.engines = {"model", "iss", "cpu"};
+  const auto rows = run_child(o);
+  ASSERT_EQ(rows.size(), 3u);
+  for (const auto& r : rows) {
+    EXPECT_EQ(r.verdict, "PASS") << r.engine << ": " << r.summary;
+    EXPECT_EQ(r.pulses, 65540u + 3u) << r.engine;  // |XE| + |YE|
+    EXPECT_EQ(r.lost, 0u) << r.engine;
+  }
+}
+
 // The paper suite at `rate` on the model and the engine that `fault`
 // corrupts (only `cases`, when given).
 std::vector<ChildRow> run_with_fault(const std::string& fault, double rate, std::vector<std::string> cases = {}) {

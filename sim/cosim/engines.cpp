@@ -34,12 +34,15 @@ void align(const sc_time& period) {
 Pulse step_pulse(Axis a, bool dir_negative) { return Pulse{a, static_cast<std::int8_t>(dir_negative ? -1 : +1)}; }
 
 // The move the program works on (or finished last) and its position, from
-// the mailbox: the slot MB_ACTIVE names, else (idle) the latest queued move
-// whose slot says done. Nothing when no move has started.
-std::optional<std::pair<int, State>> current_move(std::span<const std::uint8_t, 256> mb, const sw8085::Codes& codes,
-                                                  const std::vector<std::unique_ptr<sw8085::SlotMove>>& queued,
-                                                  const std::array<int, 2>& slot_move,
-                                                  const std::vector<std::uint64_t>* counts = nullptr) {
+// the mailbox: the slot MB_ACTIVE names, else (idle) the latest queued slot
+// whose slot says done. Nothing when no move has started. The first is the
+// move's index (queued_move maps a queued slot, a move or one of a long
+// line's segments, to its move); the state is in the whole move's terms.
+std::optional<std::pair<std::size_t, State>> current_move(std::span<const std::uint8_t, 256> mb,
+                                                          const sw8085::Codes& codes,
+                                                          const std::vector<std::unique_ptr<sw8085::SlotMove>>& queued,
+                                                          const std::vector<std::size_t>& queued_move,
+                                                          const std::array<int, 2>& slot_move) {
   const std::uint8_t active = mb[sw8085::kActive];
   int pick = -1;
   for (int i = 0; i < 2; ++i)
@@ -48,8 +51,7 @@ std::optional<std::pair<int, State>> current_move(std::span<const std::uint8_t, 
     for (int i = 0; i < 2; ++i)
       if (slot_move[i] >= 0 && codes.is_done(mb[queued[slot_move[i]]->base])) pick = std::max(pick, slot_move[i]);
   if (pick < 0) return std::nullopt;
-  const std::uint64_t n = counts && pick < static_cast<int>(counts->size()) ? (*counts)[pick] : 0;
-  return std::make_pair(pick, sw8085::decode(*queued[pick], mb, codes, n));
+  return std::make_pair(queued_move[pick], sw8085::decode(*queued[pick], mb, codes, 0));
 }
 
 // The engine's position at the end of a case (absolute, on the case's
@@ -57,11 +59,12 @@ std::optional<std::pair<int, State>> current_move(std::span<const std::uint8_t, 
 // run, and the position is then unknown.
 void read_final_position(std::span<const std::uint8_t, 256> mb, const sw8085::Codes& codes,
                          const std::vector<std::unique_ptr<sw8085::SlotMove>>& queued,
-                         const std::array<int, 2>& slot_move, const std::vector<Placed>& moves, EngineRun& run) {
+                         const std::vector<std::size_t>& queued_move, const std::array<int, 2>& slot_move,
+                         const std::vector<Placed>& moves, EngineRun& run) {
   run.position_known = true;
   run.x = run.y = 0;
   try {
-    if (const auto cur = current_move(mb, codes, queued, slot_move)) {
+    if (const auto cur = current_move(mb, codes, queued, queued_move, slot_move)) {
       run.x = moves[cur->first].origin_x + cur->second.x;
       run.y = moves[cur->first].origin_y + cur->second.y;
     }
@@ -444,6 +447,7 @@ void IssCosimEngine::begin_case(const Case& c) {
   next_move_ = 0;
   next_slot_ = 0;
   queued_.clear();
+  queued_move_.clear();
   slot_move_ = {-1, -1};
   pulses_ = 0;
   waited_ = 0;
@@ -457,18 +461,21 @@ void IssCosimEngine::begin_case(const Case& c) {
   started_.notify(SC_ZERO_TIME);
 }
 
+void IssCosimEngine::push_queued(const sw8085::SlotMove& sm, std::size_t move) {
+  queued_.push_back(std::make_unique<sw8085::SlotMove>(sm));
+  queued_move_.push_back(move);
+  slot_move_[next_slot_] = static_cast<int>(queued_.size() - 1);
+  next_slot_ ^= 1;
+}
+
+// Fills free slots: first the waiting segments of the last move queued (a
+// line of more than 65536 P steps, sw8085::Host::pump), then new moves.
 void IssCosimEngine::feed() {
-  while (next_move_ < moves_.size() && host_->slot_free(next_slot_)) {
-    // A line of more than 65536 P steps runs as segments (sw8085::Host::pump),
-    // which this engine does not queue: an error of the run, not a wrong one.
-    if (sw8085::segments(moves_[next_move_].move) > 1) {
-      error_ = describe(moves_[next_move_].move) + ": a line of more than 65536 P steps (segments) is not co-simulated";
-      return;
-    }
-    queued_.push_back(std::make_unique<sw8085::SlotMove>(host_->queue(moves_[next_move_].move)));
-    slot_move_[next_slot_] = static_cast<int>(queued_.size() - 1);
-    next_slot_ ^= 1;
+  for (const auto& sm : host_->pump()) push_queued(sm, next_move_ - 1);
+  while (next_move_ < moves_.size() && host_->can_queue()) {
+    push_queued(host_->queue(moves_[next_move_].move), next_move_);
     ++next_move_;
+    for (const auto& sm : host_->pump()) push_queued(sm, next_move_ - 1);
   }
   // Both mailbox slots busy with a move waiting: the program's queue is full.
   if (next_move_ < moves_.size() && waited_ < next_move_ + 1) ++events_["queue_full"], waited_ = next_move_ + 1;
@@ -490,9 +497,9 @@ void IssCosimEngine::collect() {
     ++pulses_;
     std::string state;
     try {
-      if (auto cur = current_move(mailbox(), host_->codes(), queued_, slot_move_)) {
+      if (auto cur = current_move(mailbox(), host_->codes(), queued_, queued_move_, slot_move_)) {
         // The pulse belongs to this move: count it there.
-        if (per_move_.size() < queued_.size()) per_move_.resize(queued_.size(), 0);
+        if (per_move_.size() < moves_.size()) per_move_.resize(moves_.size(), 0);
         cur->second.pulses = ++per_move_[cur->first];
         state = "move " + std::to_string(cur->first + 1) + ": " + to_string(cur->second);
       }
@@ -551,7 +558,7 @@ void IssCosimEngine::end_case(EngineRun& run) {
   run.error = error_;
   run.overruns_known = true;
   run.overruns = host_->overruns();
-  read_final_position(mailbox(), host_->codes(), queued_, slot_move_, moves_, run);
+  read_final_position(mailbox(), host_->codes(), queued_, queued_move_, slot_move_, moves_, run);
 }
 
 // --- cpu: board8085 --------------------------------------------------------------
@@ -656,7 +663,8 @@ bool BoardCosimEngine::slot_free(int i) {
 void BoardCosimEngine::queue_next() {
   const std::uint8_t base = sw8085::kSlots[next_slot_];
   std::array<std::uint8_t, 256> img{};
-  auto sm = sw8085::encode(moves_[next_move_].move, base, *codes_, std::span<std::uint8_t, 256>(img));
+  auto sm = sw8085::encode_segment(moves_[next_move_].move, next_segment_, base, *codes_,
+                                   std::span<std::uint8_t, 256>(img));
   const int lo = base + sw8085::kSlotLow, hi = base + sw8085::kStatus;  // the slot
   for (int a = 0; a < 256; ++a)
     if (img[a] != 0 && (a < lo || a > hi))
@@ -664,9 +672,10 @@ void BoardCosimEngine::queue_next() {
   for (int a = lo; a < hi; ++a) poke(static_cast<std::uint8_t>(a), img[a]);
   poke(static_cast<std::uint8_t>(hi), sw8085::kQueued);
   queued_.push_back(std::make_unique<sw8085::SlotMove>(sm));
+  queued_move_.push_back(next_move_);
   slot_move_[next_slot_] = static_cast<int>(queued_.size() - 1);
   next_slot_ ^= 1;
-  ++next_move_;
+  if (++next_segment_ == sm.segments) next_segment_ = 0, ++next_move_;  // a long line's next segment, else the next move
 }
 
 void BoardCosimEngine::host_thread() {
@@ -695,12 +704,8 @@ void BoardCosimEngine::host_thread() {
       request_ = Request::None;
       reply_.notify(SC_ZERO_TIME);
     } else if (active_ && error_.empty() && next_move_ < moves_.size()) {
-      try {  // sw8085::encode refuses a line of more than 65536 P steps (segments)
-        if (slot_free(next_slot_)) queue_next();
-        else if (waited_ < next_move_ + 1) ++events_["queue_full"], waited_ = next_move_ + 1;  // both slots busy
-      } catch (const std::exception& e) {
-        error_ = e.what();
-      }
+      if (slot_free(next_slot_)) queue_next();
+      else if (waited_ < next_move_ + 1) ++events_["queue_full"], waited_ = next_move_ + 1;  // both slots busy
     } else {
       sc_core::wait(request_ev_);
     }
@@ -710,8 +715,10 @@ void BoardCosimEngine::host_thread() {
 void BoardCosimEngine::begin_case(const Case& c) {
   moves_ = place(c.moves);
   next_move_ = 0;
+  next_segment_ = 0;
   next_slot_ = 0;
   queued_.clear();
+  queued_move_.clear();
   slot_move_ = {-1, -1};
   waited_ = 0;
   error_.clear();
@@ -729,7 +736,7 @@ void BoardCosimEngine::end_case(EngineRun& run) {
   const auto& mb = final_mailbox_;
   run.overruns_known = true;
   run.overruns = mb[sw8085::kOverruns] | mb[sw8085::kOverruns + 1] << 8 | mb[sw8085::kOverruns + 2] << 16;
-  read_final_position(std::span<const std::uint8_t, 256>(mb), *codes_, queued_, slot_move_, moves_, run);
+  read_final_position(std::span<const std::uint8_t, 256>(mb), *codes_, queued_, queued_move_, slot_move_, moves_, run);
 }
 
 }  // namespace contour::cosim

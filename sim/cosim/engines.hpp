@@ -242,10 +242,12 @@ class IssCosimEngine final : public CosimEngine {
   std::vector<Placed> moves_;
   std::size_t next_move_ = 0;
   int next_slot_ = 0;
-  std::vector<std::unique_ptr<sw8085::SlotMove>> queued_;  // in queue order
+  std::vector<std::unique_ptr<sw8085::SlotMove>> queued_;  // in queue order: moves and segments
+  std::vector<std::size_t> queued_move_;                   // the index into moves_ of each of queued_
   std::array<int, 2> slot_move_{-1, -1};                   // index into queued_ per slot
   std::uint64_t pulses_ = 0;
-  std::vector<std::uint64_t> per_move_;  // output pulses of each queued move
+  std::vector<std::uint64_t> per_move_;  // output pulses of each move (all its segments)
+  void push_queued(const sw8085::SlotMove& sm, std::size_t move);
   std::size_t waited_ = 0;               // moves that waited for a free slot (coverage)
   bool edge_ = false;
   bool active_ = false, parked_ = true;
@@ -287,8 +289,10 @@ class BoardCosimEngine final : public VerilatedCosimEngine {
   std::unique_ptr<sw8085::Codes> codes_;
   std::vector<Placed> moves_;
   std::size_t next_move_ = 0;
+  int next_segment_ = 0;  // of moves_[next_move_]: a long line runs as segments (sw8085::segments)
   int next_slot_ = 0;
-  std::vector<std::unique_ptr<sw8085::SlotMove>> queued_;
+  std::vector<std::unique_ptr<sw8085::SlotMove>> queued_;  // in queue order: moves and segments
+  std::vector<std::size_t> queued_move_;                   // the index into moves_ of each of queued_
   std::array<int, 2> slot_move_{-1, -1};
   std::size_t waited_ = 0;  // moves that waited for a free slot (coverage)
   // Every host port access happens in host_thread; the controller asks.

@@ -61,7 +61,7 @@ double parse_rate(const std::string& text, const std::string& what) {
 }
 
 std::string usage() {
-  return "usage: contour cosim --suite paper|smoke|full[,...] (--rate R[,R...] | --sweep) [--report DIR] [--trace]\n"
+  return "usage: contour cosim --suite paper|smoke|full|long[,...] (--rate R[,R...] | --sweep) [--report DIR] [--trace]\n"
          "         [--engines model,core,iss,cpu] [--case NAME[,NAME...]] [--progress|--no-progress]\n"
          "         [--free-clock] [--step-len N|T] [--step-space N|T] [--inject ENGINE:drop|swap|flip:N]\n"
          "  --step-len, --step-space: N core clocks, or a duration T with its unit (2us, 1500ns)\n"
