@@ -19,6 +19,11 @@
 // no wide comparator sits in the D loop. `ifdef FORMAL` asserts that every
 // flag equals the comparison it stands for.
 //
+// D is kept in two halves with the low half's carry pending (registered,
+// added into the high half at the next step), so no D carry chain is wider
+// than half of D; D's sign is a register of its own and the resolved D is
+// formed on the observe path only (o_d).
+//
 // A block is loaded when the datapath is idle, or in the very clock that
 // issues the last pulse of the running move: consecutive blocks run back to
 // back with no idle clock.
