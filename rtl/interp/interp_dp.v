@@ -19,6 +19,11 @@
 // no wide comparator sits in the D loop. `ifdef FORMAL` asserts that every
 // flag equals the comparison it stands for.
 //
+// D is kept in two halves with the low half's carry pending (registered,
+// added into the high half at the next step), so no D carry chain is wider
+// than half of D; D's sign is a register of its own and the resolved D is
+// formed on the observe path only (o_d).
+//
 // A block is loaded when the datapath is idle, or in the very clock that
 // issues the last pulse of the running move: consecutive blocks run back to
 // back with no idle clock.
@@ -88,8 +93,17 @@ module interp_dp #(
   reg           arc_q, cw_q, sxn_q, syn_q;
   reg [1:0]     q_q;
   reg [2:0]     k_q;
-  reg [W+1:0]   d_q;
-  reg [W:0]     sub_q, add_q;
+  // D in two halves (see "next values"): D = (dh + cp) * 2^DL + dl.
+  localparam integer DW = W + 2;   // D's width
+  localparam integer DL = DW / 2;  // its low half
+  localparam integer DH = DW - DL; // its high half
+  reg [DL-1:0]  dl_q;
+  reg [DH-1:0]  dh_q, dh1_q;       // dh1 = dh + 1
+  reg           cp_q;              // pending carry of the low half
+  reg           dneg_q;            // D < 0 (the sign of the resolved D)
+  reg [W:0]     nsub_q, add_q;     // nsub = ~SUB
+  // The resolved D (the observe path and the formal checks only).
+  wire [W+1:0]  d_q = {cp_q ? dh1_q : dh_q, dl_q};
   reg [W-1:0]   ci_q, co_q;
   reg [W+1:0]   ti1_q, ti2_q, tim1_q, to2_q;
   reg           in_ex_q, out_ex_q, in_one_q, out_one_q, ci_one_q, co_ti_q;
@@ -98,7 +112,7 @@ module interp_dp #(
   // ------------------------------------------------------------ decisions
   reg kz_q, k1z_q;                        // k == 0; k == 1 with to == 0 (arc)
   wire kz = kz_q;
-  wire d_pos = ~d_q[W+1];                 // D >= 0
+  wire d_pos = ~dneg_q;                   // D >= 0
   // Derived flags, registers too (their next values are formed below
   // from the next values of the flags they combine):
   //   done_q  = k == 0 & both axes arrived
@@ -157,8 +171,34 @@ module interp_dp #(
   wire pulse_neg = arc_q ? ((pulse_x ? qxn : qyn) ^ inw) : (pulse_x ? sxn_q : syn_q);
 
   // ------------------------------------------------------- next values
-  wire [W+1:0] d_in = d_q - {1'b0, sub_q};
-  wire [W+1:0] d_out = d_q + {1'b0, add_q};
+  // D's two halves are added apart: the low half's carry out is kept
+  // (cp) and added into the high half at the next step, as its carry in,
+  // so no carry chain is wider than DH bits. The high half is kept twice,
+  // dh and dh + 1, both stepped with the same operand and carry in: the
+  // resolved high half dh + cp is one of the two (a multiplexer on the
+  // observe path, o_d), and D's sign, which the step decision reads, is
+  // formed beside the chains from the candidates and registered (dneg).
+  // SUB is kept inverted (D - SUB = D + ~SUB + 1), so no inverter sits
+  // before a chain.
+  wire [DW-1:0] nsubx = {1'b1, nsub_q};          // ~{0, SUB}
+  wire [DW-1:0] addx = {1'b0, add_q};
+  // Low half, DL + 1 bits (the carry out on top); {a, 1} + {b, 1} is
+  // a + b + 1 in bits DL+1..1.
+  wire [DL+1:0] li_w = {1'b0, dl_q, 1'b1} + {1'b0, nsubx[DL-1:0], 1'b1};
+  wire [DL:0] li = li_w[DL+1:1];
+  wire [DL:0] lo = {1'b0, dl_q} + {1'b0, addx[DL-1:0]};
+  // High half, the pending carry in: {a, c} + {b, c} is a + b + c in
+  // bits DH..1.
+  wire [DH-1:0] cpx = {{(DH-1){1'b0}}, cp_q};
+  wire [DH-1:0] hi0 = dh_q + nsubx[DW-1:DL] + cpx;
+  wire [DH-1:0] hi1 = dh1_q + nsubx[DW-1:DL] + cpx;
+  wire [DH-1:0] ho0 = dh_q + addx[DW-1:DL] + cpx;
+  wire [DH-1:0] ho1 = dh1_q + addx[DW-1:DL] + cpx;
+  // Bit 0 of the sum above is 0 (1 + 1): unused.
+  wire unused_b0 = li_w[0];
+  // The sign of D after the step: of the high half with the new carry.
+  wire dneg_in = li[DL] ? hi1[DH-1] : hi0[DH-1];
+  wire dneg_out = lo[DL] ? ho1[DH-1] : ho0[DH-1];
   // ci: -1 (arc) or +1 (line) in one carry chain whose operand is a
   // register bit (no up/down multiplexer after two chains). An inward step
   // that crosses has ci = 1, so ci - 1 = 0 and co is ORed in: no crossing
@@ -199,19 +239,40 @@ module interp_dp #(
   // magnitudes, it means nothing until a block is loaded (a reset in its
   // clear would put i_rst into the load's fan-out).
   always @(posedge i_clk) begin
-    if (ce_st) d_q <= ld ? {(W+2){1'b0}} : inw ? d_in : d_out;
+    if (ce_st) begin
+      if (ld) begin
+        dl_q <= {DL{1'b0}};
+        dh_q <= {DH{1'b0}};
+        dh1_q <= {{(DH-1){1'b0}}, 1'b1};
+        cp_q <= 1'b0;
+        dneg_q <= 1'b0;
+      end else if (inw) begin
+        dl_q <= li[DL-1:0];
+        cp_q <= li[DL];
+        dh_q <= hi0;
+        dh1_q <= hi1;
+        dneg_q <= dneg_in;
+      end else begin
+        dl_q <= lo[DL-1:0];
+        cp_q <= lo[DL];
+        dh_q <= ho0;
+        dh1_q <= ho1;
+        dneg_q <= dneg_out;
+      end
+    end
   end
 
-  // SUB = 2|c_in| - 1 (arc) / B (line).
+  // SUB = 2|c_in| - 1 (arc) / B (line), kept inverted: ~(x - arc) is
+  // ~x + arc.
   always @(posedge i_clk) begin
-    if (ce_in) sub_q[W:1] <= ld ? l_sub[W:1] : (xing ? add_q[W:1] : sub_q[W:1]) - {{(W-1){1'b0}}, arc_q};
+    if (ce_in) nsub_q[W:1] <= ld ? ~l_sub[W:1] : (xing ? ~add_q[W:1] : nsub_q[W:1]) + {{(W-1){1'b0}}, arc_q};
   end
 
   // Bit 0 of SUB and ADD: a line's constants, 1 throughout an arc (odd
   // values stepped by 2): set by the load alone (no step enable).
   always @(posedge i_clk) begin
     if (ld) begin
-      sub_q[0] <= l_sub[0];
+      nsub_q[0] <= ~l_sub[0];
       add_q[0] <= l_add[0];
     end
   end
@@ -396,6 +457,7 @@ module interp_dp #(
   wire signed [2*W+5:0] ci_s = $signed({{(W+6){1'b0}}, ci_q});
   wire signed [2*W+5:0] co_s = $signed({{(W+6){1'b0}}, co_q});
   wire signed [2*W+5:0] d_s = {{(W+4){d_q[W+1]}}, d_q};
+  wire [W:0] sub_q = ~nsub_q;
   wire signed [2*W+5:0] sub_s = $signed({{(W+5){1'b0}}, sub_q});
   wire signed [2*W+5:0] add_s = $signed({{(W+5){1'b0}}, add_q});
   wire signed [2*W+5:0] r2_s = $signed({2'b00, r2_f});
@@ -412,6 +474,9 @@ module interp_dp #(
 
   always @(*) begin
     if (past_valid_f && loaded_f && !i_rst) begin
+      // D's halves: dh1 = dh + 1, dneg is the resolved D's sign.
+      assert(dh1_q == dh_q + 1'b1);
+      assert(dneg_q == d_q[W+1]);
       // Flags equal the comparisons they stand for.
       assert(in_ex_q == ({2'b00, ci_q} == ti_f));
       assert(out_ex_q == ({2'b00, co_q} == to_f));
