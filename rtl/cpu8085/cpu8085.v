@@ -419,8 +419,8 @@ module cpu8085 (
     reg        mc_1, mc_2, mc_3, mc_4;  // where the cycle index stands
     reg        sp_we;
     reg [15:0] sp_n;
+    reg        w_we, z_we;
     reg [ 7:0] w_n, z_n;
-    reg [63:0] rf_n;
     reg        rf_we, pair_we, f_we;
     reg [ 2:0] rf_wa;
     reg [ 7:0] rf_wd, f_wd;
@@ -433,6 +433,11 @@ module cpu8085 (
       {o_rd, o_wr, o_inta} <= 3'b000;
       o_retire <= 1'b0;
       {op_now, pc_we, trap_ack, r75_clr} = 4'b0000;
+      // Every variable read in a later part than the one that sets it has
+      // a value at every clock (else synthesis keeps it in a flop).
+      {irq, k, pc_now, ie_now, of_v, pc_n} = {IRQ_NONE, K_INSTR, 16'h0000, 1'b0, 4'h0, 16'h0000};
+      {sp_we, sp_n, w_we, z_we, w_n, z_n} = {1'b0, 16'h0000, 2'b00, 8'h00, 8'h00};
+      {rf_we, rf_wa, rf_wd, pair_we, pair_wa, pair_wd, f_we, f_wd} = {1'b0, 3'd0, 8'h00, 1'b0, 2'd0, 16'h0000, 1'b0, 8'h00};
       if (unit_t1) begin
         // A unit's first T-state: what the pins decide (written below).
         irq = irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr);
@@ -518,7 +523,7 @@ module cpu8085 (
           {rf_we, rf_wa, rf_wd} = {1'b0, R_A, alu_v[15:8]};
           {pair_we, pair_wa, pair_wd} = {1'b0, rp, i_din, z_q};
           {f_we, f_wd} = {1'b0, alu_v[7:0]};
-          {w_n, z_n} = {w_q, z_q};
+          {w_we, z_we, w_n, z_n} = {2'b00, w_q, z_q};
           if (end_of) begin
             if (is_mov_rr) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, r8(sss)};
             if (is_alu_r) rf_we = (ddd != 3'd7);  // CMP writes only F
@@ -545,27 +550,16 @@ module cpu8085 (
             if (is_pop && mc_2 && rp == 2'd3) {f_we, f_wd} = {1'b1, z_q & 8'hD5};
             if (mc_1 && (is_mvi_m | is_lxi | is_direct | is_pop_ret | is_jcc | is_jmp |
                          (is_out | is_in) | is_xthl | (is_ccc | is_call)))
-              z_n = i_din;
-            if (mc_1 && is_incdec_m) z_n = alu_v[15:8];
-            if (mc_2 && (is_direct | is_xthl | (is_ccc | is_call))) w_n = i_din;
-            if (mc_3 && is_direct && !ir_q[4]) {w_n, z_n} = {w_q, z_q} + 16'd1;
+              {z_we, z_n} = {1'b1, i_din};
+            if (mc_1 && is_incdec_m) {z_we, z_n} = {1'b1, alu_v[15:8]};
+            if (mc_2 && (is_direct | is_xthl | (is_ccc | is_call))) {w_we, w_n} = {1'b1, i_din};
+            if (mc_3 && is_direct && !ir_q[4]) {w_we, z_we, w_n, z_n} = {2'b11, {w_q, z_q} + 16'd1};
           end
 `ifdef FORMAL
           // The byte and pair write ports never address F (index 6, pair 3).
           assert (!rf_we || rf_wa != R_F);
           assert (!pair_we || pair_wa != 2'd3);
 `endif
-          // F is written by its own port only: the byte and pair ports never
-          // address it (asserted above), the guards tell synthesis so.
-          // One enable per byte and per pair (what the register file's
-          // address decode was as an array).
-          rf_n = rf_q;
-          for (b = 0; b < 8; b = b + 1)
-            if (rf_we && rf_wa != R_F && rf_pos(rf_wa) == b[2:0]) rf_n[8*b +: 8] = rf_wd;
-          for (b = 0; b < 3; b = b + 1)  // BC at bits 47:32, DE 31:16, HL 15:0
-            if (pair_we && pair_wa == b[1:0]) rf_n[16*(2-b) +: 16] = pair_wd;
-          if (f_we) rf_n[RF_F + 7:RF_F] = f_wd;
-          if (end_of && is_xchg) rf_n[31:0] = {rf_q[15:0], rf_q[31:16]};  // DE <-> HL
         end
         // Sequencer: the unit ends (the next one starts as an opcode
         // fetch, or as an idle T-state while halted, until its first
@@ -603,8 +597,19 @@ module cpu8085 (
             if (rf_q[RF_A + 6]) o_sod <= rf_q[RF_A + 7];
           end
           if (sp_we) sp_q <= sp_n;
-          {w_q, z_q} <= {w_n, z_n};
-          rf_q <= rf_n;
+          if (w_we) w_q <= w_n;
+          if (z_we) z_q <= z_n;
+          // F is written by its own port only: the byte and pair ports
+          // never address it (asserted above), the guards tell synthesis
+          // so. One enable per byte and per pair (what the register
+          // file's address decode was as an array; the register file
+          // keeps its shadow copy in a Verilated model: a partial write).
+          for (b = 0; b < 8; b = b + 1)
+            if (rf_we && rf_wa != R_F && rf_pos(rf_wa) == b[2:0]) rf_q[8*b +: 8] <= rf_wd;
+          for (b = 0; b < 3; b = b + 1)  // BC at bits 47:32, DE 31:16, HL 15:0
+            if (pair_we && pair_wa == b[1:0]) rf_q[16*(2-b) +: 16] <= pair_wd;
+          if (f_we) rf_q[RF_F + 7:RF_F] <= f_wd;
+          if (end_of && is_xchg) rf_q[31:0] <= {rf_q[15:0], rf_q[31:16]};  // DE <-> HL
         end
       end
       if (unit_t1) begin
