@@ -167,8 +167,6 @@ module cpu8085 (
   // from the unit's second T-state on: at the first one no cycle of an
   // instruction or acknowledge ends, so the pins' decision only reaches
   // the sequencer, not the datapath (a shorter critical path).
-  wire [1:0] kind = kind_q;
-  wire intr_mode = (kind == K_INTR);
 
   // ------------------------------------------------------------ decode
   // The opcode decoded into one-hot classes (cpu8085_decode.vh), registered
@@ -191,11 +189,6 @@ module cpu8085 (
           is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
           is_ccc, is_call, is_push, is_rst,
           is_mem_rmw, is_pop_ret} = cls_q;
-  // Where the cycle index stands.
-  wire mc_1 = (mc_q == 3'd1);
-  wire mc_2 = (mc_q == 3'd2);
-  wire mc_3 = (mc_q == 3'd3);
-  wire mc_4 = (mc_q == 3'd4);
 
   // Conditions NZ Z NC C PO PE P M of the opcode's bits 5:3 on the flags
   // S Z P CY (F's bits 7 6 2 0).
@@ -270,7 +263,7 @@ module cpu8085 (
       if (is_direct) seq_cyc = (at_le2 || ir_q[3]) ? CY_MR : CY_MW;
       if (is_out | is_in) seq_cyc = at_1 ? CY_MR : (is_in ? CY_IOR : CY_IOW);
       if (is_xthl | (is_ccc | is_call)) seq_cyc = at_le2 ? CY_MR : CY_MW;
-      if (intr_mode && seq_cyc == CY_MR && asel == A_PC) seq_cyc = CY_INA;
+      if (kind_q == K_INTR && seq_cyc == CY_MR && asel == A_PC) seq_cyc = CY_INA;
     end
   endfunction
 
@@ -322,16 +315,10 @@ module cpu8085 (
   reg [2:0] cyc_q, asel_q, len_q;
   reg [3:0] dsel_q;
   reg       last_q;
-  // A cycle ends at its last T-state; at a unit's first T-state only an
-  // idle unit ends (the sequencer does that itself, and no work is done).
-  wire cyc_end_later = !unit_t1 && (t_q == len_q);
-  // The instruction's work is done at the end of its cycles: of the opcode
-  // fetch (end_of) or of a later cycle (end_mc).
-  wire end_work = cyc_end_later && (kind != K_IDLE);
-  wire end_of = end_work && (mc_q == 3'd0);
-  wire end_mc = end_work && (mc_q != 3'd0);
-  // The opcode arrives at the end of T3 of the opcode fetch / INTA.
-  wire op_load = (mc_q == 3'd0) && (t_q == 3'd3) && (kind == K_INSTR || kind == K_INTR);
+  // (A cycle ends at its last T-state: t_q == len_q, but at a unit's first
+  // T-state, where only an idle unit ends. The opcode arrives at the end of
+  // T3 of the opcode fetch / INTA. Both are tested in the clocked block
+  // below, where they are needed, not computed as wires at every clock.)
 
   // Bus outputs: the address and write data, registered by the sequencer
   // at the end of a cycle's first T-state from its sources (valid from T2,
@@ -401,33 +388,234 @@ module cpu8085 (
   endfunction
 
   // ------------------------------------------------------------ registers
-  // Each register (or small group) below has its own block; updates happen
-  // at the end of the T-state named in the comments. Priority in each:
-  // reset, then a debug load, then running.
-
-  // Sequencer: T-state in the cycle and cycle index in the unit, the
-  // registered description of the current cycle and the bus strobes (T2
-  // of a cycle that reads, writes or acknowledges); the retire strobe is
-  // the first T-state of the next unit. At a unit's first T-state the pins
-  // decide what the unit is: an idle unit ends there, anything else starts
-  // its first cycle; its opcode (end of T3) gives the fetch's length.
-  always @(posedge i_clk) begin : sequencer
-    reg [1:0] k;
-    reg [2:0] a, c, mc;
-    if (i_rst) begin
-      t_q <= 3'd1;
-      mc_q <= 3'd0;
-      unit_t1 <= 1'b1;
-      o_retire <= 1'b0;
-      {cyc_q, asel_q, dsel_q, len_q, last_q} <= {CY_OF, A_PC, D_A, 3'd4, 1'b1};
-      {o_rd, o_wr, o_io, o_inta} <= 4'b0000;
-      o_addr <= 16'h0000;
-      o_dout <= 8'h00;
-    end else if (!i_dbg_load) begin
+  // All registers but the instruction register are written by one clocked
+  // block, in three exclusive branches by where the T-state stands: inside
+  // a cycle (the T-state count, the opcode at the end of T3 of a fetch,
+  // the bus outputs at the end of T1), a cycle's last T-state (the
+  // instruction's work and the next cycle), a unit's first T-state (the
+  // pins decide what the unit is). Priority: reset, then a debug load,
+  // then running (written last in the block).
+  //
+  // For the speed of a Verilated model: most T-states are inside a cycle
+  // and run only that branch; and every register is read, in the block's
+  // text, before it is written (what the pins decide, the next PC, the
+  // work's results are computed into variables first and written after
+  // the reads; the PC, the edge latches and the opcode's fetch length at
+  // the end). A register written before a later read of it costs the
+  // model a shadow copy at every clock.
+  integer b;
+  always @(posedge i_clk) begin : cpu
+    reg [ 2:0] irq, a, c, mc;
+    reg [ 1:0] k;
+    reg [15:0] pc_now;               // PC at a unit's first T-state
+    reg        ie_now;               // IE at a unit's first T-state
+    reg [ 3:0] of_v;                 // of_end() of the opcode read now
+    reg        op_now;               // the opcode is read now
+    reg        pc_we;                // pc_q <= pc_n at the end
+    reg [15:0] pc_n;
+    reg        trap_ack, r75_clr;   // the edge latches are cleared now
+    reg        hlt_next;             // the unit that ends is followed by idle units
+    reg        end_of, end_mc;       // the cycle that ends is the fetch / a later one
+    reg        mc_1, mc_2, mc_3, mc_4;  // where the cycle index stands
+    reg        sp_we;
+    reg [15:0] sp_n;
+    reg        w_we, z_we;
+    reg [ 7:0] w_n, z_n;
+    reg        rf_we, pair_we, f_we;
+    reg [ 2:0] rf_wa;
+    reg [ 7:0] rf_wd, f_wd;
+    reg [ 1:0] pair_wa;
+    reg [15:0] pair_wd, pair_v, alu_v;
+    reg [16:0] dad_sum;
+    reg [ 2:0] alu_src;
+    if (!i_rst && !i_dbg_load) begin
+      // Bus strobes: one clock (T2); retire: the first T-state of a unit.
       {o_rd, o_wr, o_inta} <= 3'b000;
       o_retire <= 1'b0;
+      {op_now, pc_we, trap_ack, r75_clr} = 4'b0000;
+      // Every variable read in a later part than the one that sets it has
+      // a value at every clock (else synthesis keeps it in a flop).
+      {irq, k, pc_now, ie_now, of_v, pc_n} = {IRQ_NONE, K_INSTR, 16'h0000, 1'b0, 4'h0, 16'h0000};
+      {sp_we, sp_n, w_we, z_we, w_n, z_n} = {1'b0, 16'h0000, 2'b00, 8'h00, 8'h00};
+      {rf_we, rf_wa, rf_wd, pair_we, pair_wa, pair_wd, f_we, f_wd} = {1'b0, 3'd0, 8'h00, 1'b0, 2'd0, 16'h0000, 1'b0, 8'h00};
       if (unit_t1) begin
-        k = kind_of(irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr));
+        // A unit's first T-state: what the pins decide (written below).
+        irq = irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr);
+        k = kind_of(irq);
+        pc_now = pc_q;
+        ie_now = ie_q;
+      end
+      if (!unit_t1 && t_q != len_q) begin
+        // ---- A T-state inside a cycle.
+        if (mc_q == 3'd0 && t_q == 3'd3 && (kind_q == K_INSTR || kind_q == K_INTR)) begin
+          // The opcode (end of T3 of the fetch / INTA): the fetch's
+          // length and whether the unit ends with it; PC + 1 past an
+          // opcode read at PC (written at the end of the block).
+          op_now = 1'b1;
+          of_v = of_end(i_din);
+          {pc_we, pc_n} = {kind_q == K_INSTR, pc_q + 16'd1};
+        end
+        if (t_q == 3'd1) begin
+          // Bus: address, write data and strobes at the end of T1.
+          o_addr <= addr_of(asel_q);
+          o_dout <= dout_of(dsel_q);
+          o_rd <= (cyc_q == CY_MR || cyc_q == CY_IOR);
+          o_wr <= (cyc_q == CY_MW || cyc_q == CY_IOW);
+          o_inta <= (cyc_q == CY_INA);
+        end
+        t_q <= t_q + 3'd1;
+      end else if (!unit_t1) begin
+        // ---- A cycle's last T-state.
+        mc = mc_q + 3'd1;
+        hlt_next = halted_q || (is_hlt && mc_q == 3'd1);
+        // The instruction's work, at the end of its cycles: of the
+        // opcode fetch (end_of) or of a later cycle (end_mc); computed
+        // here, written after the sequencer's registers below.
+        end_of = (mc_q == 3'd0);
+        end_mc = !end_of;
+        {mc_1, mc_2, mc_3, mc_4} = {mc_q == 3'd1, mc_q == 3'd2, mc_q == 3'd3, mc_q == 3'd4};
+        if (kind_q != K_IDLE) begin
+          // Program counter: +1 for each operand byte read at PC; +2
+          // over the address of a Jcc / Ccc not taken (not read; an INTR
+          // acknowledge supplies no address to skip); jumps, calls,
+          // returns, RST.
+          if (end_of && is_pchl) {pc_we, pc_n} = {1'b1, r8(R_H), r8(R_L)};
+          if (end_mc) begin
+            if (cyc_q == CY_MR && asel_q == A_PC) {pc_we, pc_n} = {1'b1, pc_q + 16'd1};
+            if (mc_1 && (is_jcc | is_ccc) && !cond_ir(ddd) && kind_q != K_INTR) {pc_we, pc_n} = {1'b1, pc_q + 16'd2};
+            if (mc_2 && (is_jcc | is_jmp | is_rcc | is_ret)) {pc_we, pc_n} = {1'b1, i_din, z_q};
+            if (mc_4 && (is_ccc | is_call)) {pc_we, pc_n} = {1'b1, w_q, z_q};
+            if (mc_2 && is_rst) {pc_we, pc_n} = {1'b1, (kind_q == K_IACK) ? vec_q : {10'b0, ddd, 3'b000}};
+          end
+          // Stack pointer: pushes decrement before each write, pops
+          // increment after each read; SPHL, LXI SP, INX SP, DCX SP.
+          {sp_we, sp_n} = {1'b0, sp_q};
+          if (end_of && (is_push | is_rst)) {sp_we, sp_n} = {1'b1, sp_q - 16'd1};
+          if (end_of && is_sphl) {sp_we, sp_n} = {1'b1, r8(R_H), r8(R_L)};
+          if (end_of && is_inx && rp == 2'd3) {sp_we, sp_n} = {1'b1, sp_q + 16'd1};
+          if (end_of && is_dcx && rp == 2'd3) {sp_we, sp_n} = {1'b1, sp_q - 16'd1};
+          if (end_mc) begin
+            if (mc_2 && is_lxi && rp == 2'd3) {sp_we, sp_n} = {1'b1, i_din, z_q};
+            if (is_pop_ret) {sp_we, sp_n} = {1'b1, sp_q + 16'd1};
+            if ((mc_2 || mc_3) && (is_ccc | is_call)) {sp_we, sp_n} = {1'b1, sp_q - 16'd1};
+            if (mc_1 && (is_push | is_rst)) {sp_we, sp_n} = {1'b1, sp_q - 16'd1};
+          end
+          // SIM with R7.5 clears the RST 7.5 latch (at the end).
+          r75_clr = end_of && is_sim && rf_q[RF_A + 4];
+          // Register file B C D E H L F A, through three write ports
+          // decoded from the class: one register (rf_we: MOV, MVI, INR r
+          // / DCR r, accumulator results, loads), one pair B / D / H
+          // (pair_we: LXI, INX, DCX, DAD, POP but PSW, XTHL), the flags
+          // (f_we: ALU results, DAD's carry, POP PSW), and XCHG's swap of
+          // DE and HL; the temporary pair W Z (operand bytes, Z first;
+          // INR M / DCR M's result; SHLD / LHLD's address + 1). The ports
+          // and the ALU are computed only when a cycle ends.
+          // The ALU's register operand: DDD for INR / DCR, SSS otherwise (6:
+          // M, the byte read).
+          alu_src = (ir_q[7:6] == 2'b00) ? ddd : sss;
+          // The ALU only for the classes whose result it is (a Verilated model
+          // skips it at the end of other cycles; its value is unused there).
+          alu_v = 16'h0000;
+          if (is_alu_r | is_alu_m | is_alu_i | is_incdec_r | is_incdec_m | is_acc)
+            alu_v = alu_ir(ir_q, (alu_src == 3'd6) ? i_din : r8(alu_src), r8(R_A), r8(R_F));
+          pair_v = (rp == 2'd0) ? {r8(R_B), r8(R_C)} : (rp == 2'd1) ? {r8(R_D), r8(R_E)} : {r8(R_H), r8(R_L)};  // rp 3 (SP): not here
+          dad_sum = {1'b0, {r8(R_H), r8(R_L)}} + {1'b0, (rp == 2'd3) ? sp_q : pair_v};
+          {rf_we, rf_wa, rf_wd} = {1'b0, R_A, alu_v[15:8]};
+          {pair_we, pair_wa, pair_wd} = {1'b0, rp, i_din, z_q};
+          {f_we, f_wd} = {1'b0, alu_v[7:0]};
+          {w_we, z_we, w_n, z_n} = {2'b00, w_q, z_q};
+          if (end_of) begin
+            if (is_mov_rr) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, r8(sss)};
+            if (is_alu_r) rf_we = (ddd != 3'd7);  // CMP writes only F
+            if (is_incdec_r) {rf_we, rf_wa} = {1'b1, ddd};
+            if (is_acc) rf_we = 1'b1;
+            if (is_rim)
+              {rf_we, rf_wd} = {1'b1, i_sid, r75_latch_q | (i_rst75 & ~r75_prev_q), i_rst65, i_rst55,
+                                rim_after_trap_q ? ie_before_trap_q : ie_q, masks_q};
+            if (is_inx && rp != 2'd3) {pair_we, pair_wd} = {1'b1, pair_v + 16'd1};
+            if (is_dcx && rp != 2'd3) {pair_we, pair_wd} = {1'b1, pair_v - 16'd1};
+            if (is_alu_r | is_incdec_r | is_acc) f_we = 1'b1;
+          end else begin
+            if (is_mov_rm || is_mvi_r) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, i_din};
+            if (is_alu_m || is_alu_i) rf_we = (ddd != 3'd7);
+            if (is_ldax || (is_in && mc_2)) {rf_we, rf_wd} = {1'b1, i_din};
+            if (is_direct && mc_3 && ir_q[3]) {rf_we, rf_wa, rf_wd} = {1'b1, ir_q[4] ? R_A : R_L, i_din};
+            if (is_direct && mc_4 && ir_q[3]) {rf_we, rf_wa, rf_wd} = {1'b1, R_H, i_din};
+            if (is_pop && mc_2 && rp == 2'd3) {rf_we, rf_wd} = {1'b1, i_din};
+            if (mc_2 && rp != 2'd3 && (is_lxi || is_pop)) pair_we = 1'b1;
+            if (mc_2 && is_dad) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, dad_sum[15:0]};
+            if (mc_4 && is_xthl) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, {w_q, z_q}};
+            if (is_alu_m | is_alu_i | (is_incdec_m & mc_1)) f_we = 1'b1;
+            if (is_dad && mc_2) {f_we, f_wd} = {1'b1, rf_q[RF_F + 7:RF_F + 1], dad_sum[16]};
+            if (is_pop && mc_2 && rp == 2'd3) {f_we, f_wd} = {1'b1, z_q & 8'hD5};
+            if (mc_1 && (is_mvi_m | is_lxi | is_direct | is_pop_ret | is_jcc | is_jmp |
+                         (is_out | is_in) | is_xthl | (is_ccc | is_call)))
+              {z_we, z_n} = {1'b1, i_din};
+            if (mc_1 && is_incdec_m) {z_we, z_n} = {1'b1, alu_v[15:8]};
+            if (mc_2 && (is_direct | is_xthl | (is_ccc | is_call))) {w_we, w_n} = {1'b1, i_din};
+            if (mc_3 && is_direct && !ir_q[4]) {w_we, z_we, w_n, z_n} = {2'b11, {w_q, z_q} + 16'd1};
+          end
+`ifdef FORMAL
+          // The byte and pair write ports never address F (index 6, pair 3).
+          assert (!rf_we || rf_wa != R_F);
+          assert (!pair_we || pair_wa != 2'd3);
+`endif
+        end
+        // Sequencer: the unit ends (the next one starts as an opcode
+        // fetch, or as an idle T-state while halted, until its first
+        // T-state decides), or its next cycle starts: its description
+        // is registered once, here.
+        t_q <= 3'd1;
+        if (last_q) begin
+          unit_t1 <= 1'b1;
+          o_retire <= 1'b1;
+          cyc_q <= hlt_next ? CY_HLT : CY_OF;
+          {asel_q, dsel_q, o_io} <= {A_PC, D_A, 1'b0};
+          mc_q <= 3'd0;
+        end else begin
+          a = seq_asel(mc);
+          c = seq_cyc(mc, a);
+          {cyc_q, asel_q, dsel_q, last_q} <= {c, a, seq_dsel(mc), seq_last(mc)};
+          len_q <= (c == CY_HLT) ? 3'd1 : 3'd3;
+          o_io <= (c == CY_IOR || c == CY_IOW);
+          // A 1-T cycle (HLT's fifth T-state) has no T2.
+          mc_q <= mc;
+        end
+        if (kind_q != K_IDLE) begin
+          // The work's results. Interrupt state: DI and EI set IE at the
+          // end of their fetch (EI with its one-unit shadow); HLT's fifth
+          // T-state sets halted; RIM ends the after-TRAP IE. SIM: the
+          // interrupt masks (with MSE), the serial output (with SOE).
+          if (end_of && (is_di || is_ei)) begin
+            ie_q <= is_ei;
+            ei_delay_q <= is_ei;
+          end
+          if (end_mc && is_hlt) halted_q <= 1'b1;
+          if (end_of && is_rim) rim_after_trap_q <= 1'b0;
+          if (end_of && is_sim) begin
+            if (rf_q[RF_A + 3]) masks_q <= rf_q[RF_A + 2:RF_A + 0];
+            if (rf_q[RF_A + 6]) o_sod <= rf_q[RF_A + 7];
+          end
+          if (sp_we) sp_q <= sp_n;
+          if (w_we) w_q <= w_n;
+          if (z_we) z_q <= z_n;
+          // F is written by its own port only: the byte and pair ports
+          // never address it (asserted above), the guards tell synthesis
+          // so. One enable per byte and per pair (what the register
+          // file's address decode was as an array; the register file
+          // keeps its shadow copy in a Verilated model: a partial write).
+          for (b = 0; b < 8; b = b + 1)
+            if (rf_we && rf_wa != R_F && rf_pos(rf_wa) == b[2:0]) rf_q[8*b +: 8] <= rf_wd;
+          for (b = 0; b < 3; b = b + 1)  // BC at bits 47:32, DE 31:16, HL 15:0
+            if (pair_we && pair_wa == b[1:0]) rf_q[16*(2-b) +: 16] <= pair_wd;
+          if (f_we) rf_q[RF_F + 7:RF_F] <= f_wd;
+          if (end_of && is_xchg) rf_q[31:0] <= {rf_q[15:0], rf_q[31:16]};  // DE <-> HL
+        end
+      end
+      if (unit_t1) begin
+        // ---- A unit's first T-state: an idle unit ends here, anything
+        // else starts its first cycle; its opcode (end of T3) gives the
+        // fetch's length.
         if (k == K_IDLE) begin
           o_retire <= 1'b1;
           cyc_q <= CY_HLT;
@@ -440,288 +628,110 @@ module cpu8085 (
           {len_q, last_q} <= (k == K_IACK) ? {3'd6, 1'b0} : {3'd4, 1'b1};
           o_rd <= (c == CY_OF);
           o_inta <= (c == CY_INA);
-          o_addr <= pc_q;
+          o_addr <= pc_now;
         end
-      end else if (cyc_end_later) begin
-        t_q <= 3'd1;
-        if (last_q) begin
-          // The unit ends: the next one starts as an opcode fetch, or as
-          // an idle T-state while halted, until its first T-state decides.
-          mc_q <= 3'd0;
-          unit_t1 <= 1'b1;
-          o_retire <= 1'b1;
-          cyc_q <= (halted_q || (is_hlt && mc_q == 3'd1)) ? CY_HLT : CY_OF;
-          {asel_q, dsel_q, o_io} <= {A_PC, D_A, 1'b0};
-        end else begin
-          mc = mc_q + 3'd1;
-          mc_q <= mc;
-          a = seq_asel(mc);
-          c = seq_cyc(mc, a);
-          {cyc_q, asel_q, dsel_q, last_q} <= {c, a, seq_dsel(mc), seq_last(mc)};
-          len_q <= (c == CY_HLT) ? 3'd1 : 3'd3;
-          o_io <= (c == CY_IOR || c == CY_IOW);
-          // A 1-T cycle (HLT's fifth T-state) has no T2.
-        end
-      end else begin
-        t_q <= t_q + 3'd1;
-        if (op_load) {len_q, last_q} <= of_end(i_din);
-        if (t_q == 3'd1) begin
-          o_addr <= addr_of(asel_q);
-          o_dout <= dout_of(dsel_q);
-          o_rd <= (cyc_q == CY_MR || cyc_q == CY_IOR);
-          o_wr <= (cyc_q == CY_MW || cyc_q == CY_IOW);
-          o_inta <= (cyc_q == CY_INA);
-        end
-      end
-    end
-  end
-
-  // What the unit is, decided at its first T-state: kind, interrupt, PC at
-  // its start, and the vector of a TRAP / RST x.5 acknowledge.
-  always @(posedge i_clk) begin : unit_kind
-    reg [2:0] irq;
-    if (i_rst) begin
-      kind_q <= K_INSTR;
-      irq_q <= IRQ_NONE;
-      ipc_q <= 16'h0000;
-      vec_q <= 16'h0000;
-    end else if (!i_dbg_load && unit_t1) begin
-      irq = irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr);
-      kind_q <= kind_of(irq);
-      irq_q <= irq;
-      ipc_q <= pc_q;
-      case (irq)
-        IRQ_TRAP: vec_q <= 16'h0024;
-        IRQ_75: vec_q <= 16'h003C;
-        IRQ_65: vec_q <= 16'h0034;
-        default: vec_q <= 16'h002C;
-      endcase
-    end
-  end
-
-  // TRAP and RST 7.5 edge latches: set by a rising edge at any time,
-  // cleared by their acknowledge (and RST 7.5's by SIM with R7.5).
-  always @(posedge i_clk) begin : edge_latches
-    reg [2:0] irq;
-    if (i_rst) begin
-      trap_prev_q <= 1'b0;
-      r75_prev_q <= 1'b0;
-      trap_latch_q <= 1'b0;
-      r75_latch_q <= 1'b0;
-    end else if (!i_dbg_load) begin
-      // Only a change of a pin does anything here (rare: a Verilated
-      // model tests two bits per clock).
-      if (i_trap != trap_prev_q) begin
-        trap_prev_q <= i_trap;
-        if (i_trap) trap_latch_q <= 1'b1;
-      end
-      if (i_rst75 != r75_prev_q) begin
-        r75_prev_q <= i_rst75;
-        if (i_rst75) r75_latch_q <= 1'b1;
-      end
-      // An acknowledge clears its latch: only possible when the latch is
-      // set or its pin rises now (the decision then needs nothing else).
-      if (unit_t1 && (trap_latch_q | r75_latch_q | (i_trap & ~trap_prev_q) | (i_rst75 & ~r75_prev_q))) begin
-        irq = irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr);
-        if (irq == IRQ_TRAP) trap_latch_q <= 1'b0;
-        if (irq == IRQ_75) r75_latch_q <= 1'b0;
-      end
-      if (end_of && is_sim && rf_q[RF_A + 4]) r75_latch_q <= 1'b0;
-    end
-  end
-
-  // Interrupt enable and the EI shadow: an acknowledge clears IE, DI and EI
-  // set it at the end of their opcode fetch; the shadow lasts one unit.
-  // Halted: set by HLT's fifth T-state, cleared by an acknowledge. RIM's IE
-  // bit after a TRAP: IE as it was before the TRAP, until the first RIM.
-  always @(posedge i_clk) begin : interrupt_state
-    reg [2:0] irq;
-    if (i_rst) begin
-      ie_q <= 1'b0;
-      ei_delay_q <= 1'b0;
-      halted_q <= 1'b0;
-      rim_after_trap_q <= 1'b0;
-      ie_before_trap_q <= 1'b0;
-    end else if (!i_dbg_load) begin
-      if (unit_t1) begin
-        irq = irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr);
+        // Unit kind, interrupt, PC at its start, the vector of a TRAP /
+        // RST x.5 acknowledge.
+        kind_q <= k;
+        irq_q <= irq;
+        ipc_q <= pc_now;
+        case (irq)
+          IRQ_TRAP: vec_q <= 16'h0024;
+          IRQ_75: vec_q <= 16'h003C;
+          IRQ_65: vec_q <= 16'h0034;
+          default: vec_q <= 16'h002C;
+        endcase
+        // An acknowledge clears its edge latch (at the end), IE and
+        // halted; the EI shadow lasts one unit; RIM's IE bit after a
+        // TRAP: IE as it was before the TRAP, until the first RIM.
+        trap_ack = (irq == IRQ_TRAP);
+        r75_clr = (irq == IRQ_75);
         ei_delay_q <= 1'b0;
         if (irq != IRQ_NONE) begin
           ie_q <= 1'b0;
           halted_q <= 1'b0;
         end
         if (irq == IRQ_TRAP) begin
-          ie_before_trap_q <= ie_q;
+          ie_before_trap_q <= ie_now;
           rim_after_trap_q <= 1'b1;
         end
       end
-      if (end_work) begin
-        if (end_of && (is_di || is_ei)) begin
-          ie_q <= is_ei;
-          ei_delay_q <= is_ei;
-        end
-        if (end_mc && is_hlt) halted_q <= 1'b1;
-        if (end_of && is_rim) rim_after_trap_q <= 1'b0;
-      end
+      // The opcode's fetch length and end, the PC.
+      if (op_now) {len_q, last_q} <= of_v;
+      if (pc_we) pc_q <= pc_n;
+      // TRAP and RST 7.5 edge latches: set by a rising edge of their pin
+      // at any time, cleared by their acknowledge (and RST 7.5's by SIM
+      // with R7.5), the clearing first.
+      if (trap_ack) trap_latch_q <= 1'b0;
+      else if (i_trap && !trap_prev_q) trap_latch_q <= 1'b1;
+      if (r75_clr) r75_latch_q <= 1'b0;
+      else if (i_rst75 && !r75_prev_q) r75_latch_q <= 1'b1;
+      if (i_trap != trap_prev_q) trap_prev_q <= i_trap;
+      if (i_rst75 != r75_prev_q) r75_prev_q <= i_rst75;
     end
-  end
-
-  // SIM: interrupt masks (with MSE) and the serial output (with SOE).
-  always @(posedge i_clk) begin
+    // Reset and a debug load: after the running part (whose reads of the
+    // registers then all precede their writes).
     if (i_rst) begin
+      // Sequencer and bus.
+      t_q <= 3'd1;
+      mc_q <= 3'd0;
+      unit_t1 <= 1'b1;
+      o_retire <= 1'b0;
+      {cyc_q, asel_q, dsel_q, len_q, last_q} <= {CY_OF, A_PC, D_A, 3'd4, 1'b1};
+      {o_rd, o_wr, o_io, o_inta} <= 4'b0000;
+      o_addr <= 16'h0000;
+      o_dout <= 8'h00;
+      // Unit kind.
+      kind_q <= K_INSTR;
+      irq_q <= IRQ_NONE;
+      ipc_q <= 16'h0000;
+      vec_q <= 16'h0000;
+      // Edge latches, interrupt state, SIM.
+      trap_prev_q <= 1'b0;
+      r75_prev_q <= 1'b0;
+      trap_latch_q <= 1'b0;
+      r75_latch_q <= 1'b0;
+      ie_q <= 1'b0;
+      ei_delay_q <= 1'b0;
+      halted_q <= 1'b0;
+      rim_after_trap_q <= 1'b0;
+      ie_before_trap_q <= 1'b0;
       masks_q <= 3'b111;
       o_sod <= 1'b0;
-    end else if (!i_dbg_load && end_of && is_sim) begin
-      if (rf_q[RF_A + 3]) masks_q <= rf_q[RF_A + 2:RF_A + 0];
-      if (rf_q[RF_A + 6]) o_sod <= rf_q[RF_A + 7];
-    end
-  end
-
-  // Instruction register and its decoded classes: the opcode at the end of
-  // T3 of the fetch / INTA; a TRAP / RST x.5 acknowledge runs as RST 7 (FF).
-  always @(posedge i_clk) begin : instruction
-    reg [2:0] irq;
-    if (i_rst) begin
-      ir_q <= 8'h00;
-      cls_q <= decode(8'h00);
-    end else if (!i_dbg_load) begin
-      if (unit_t1) begin
-        irq = irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr);
-        if (irq != IRQ_NONE && irq != IRQ_INTR) begin
-          ir_q <= 8'hFF;
-          cls_q <= decode(8'hFF);
-        end
-      end
-      if (op_load) begin
-        ir_q <= i_din;
-        cls_q <= decode(i_din);
-      end
-    end
-  end
-
-  // Program counter: +1 for the opcode and each operand byte read at PC;
-  // +2 over the address of a Jcc / Ccc not taken (not read; an INTR
-  // acknowledge supplies no address to skip); jumps, calls, returns, RST.
-  always @(posedge i_clk) begin
-    if (i_rst) pc_q <= 16'h0000;
-    else if (i_dbg_load) pc_q <= i_dbg_pc;
-    else if (op_load || end_work) begin
-      if (op_load && kind == K_INSTR) pc_q <= pc_q + 16'd1;
-      if (end_of && is_pchl) pc_q <= {r8(R_H), r8(R_L)};
-      if (end_mc) begin
-        if (cyc_q == CY_MR && asel_q == A_PC) pc_q <= pc_q + 16'd1;
-        if (mc_1 && (is_jcc | is_ccc) && !cond_ir(ddd) && !intr_mode) pc_q <= pc_q + 16'd2;
-        if (mc_2 && (is_jcc | is_jmp | is_rcc | is_ret)) pc_q <= {i_din, z_q};
-        if (mc_4 && (is_ccc | is_call)) pc_q <= {w_q, z_q};
-        if (mc_2 && is_rst) pc_q <= (kind == K_IACK) ? vec_q : {10'b0, ddd, 3'b000};
-      end
-    end
-  end
-
-  // Stack pointer: pushes decrement before each write, pops increment after
-  // each read; SPHL, LXI SP, INX SP, DCX SP.
-  always @(posedge i_clk) begin
-    if (i_rst) sp_q <= 16'h0000;
-    else if (i_dbg_load) sp_q <= i_dbg_sp;
-    else if (end_work) begin
-      if (end_of && (is_push | is_rst)) sp_q <= sp_q - 16'd1;
-      if (end_of && is_sphl) sp_q <= {r8(R_H), r8(R_L)};
-      if (end_of && is_inx && rp == 2'd3) sp_q <= sp_q + 16'd1;
-      if (end_of && is_dcx && rp == 2'd3) sp_q <= sp_q - 16'd1;
-      if (end_mc) begin
-        if (mc_2 && is_lxi && rp == 2'd3) sp_q <= {i_din, z_q};
-        if (is_pop_ret) sp_q <= sp_q + 16'd1;
-        if ((mc_2 || mc_3) && (is_ccc | is_call)) sp_q <= sp_q - 16'd1;
-        if (mc_1 && (is_push | is_rst)) sp_q <= sp_q - 16'd1;
-      end
-    end
-  end
-
-  // Register file B C D E H L F A. Written at the end of the cycle that
-  // produces a result (end_work), through three ports decoded from the
-  // class: one register (rf_we: MOV, MVI, INR r / DCR r, accumulator
-  // results, loads), one pair B / D / H (pair_we: LXI, INX, DCX, DAD, POP
-  // but PSW, XTHL), the flags (f_we: ALU results, DAD's carry, POP PSW),
-  // and XCHG's swap of DE and HL; the temporary pair W Z (operand bytes, Z
-  // first; INR M / DCR M's result; SHLD / LHLD's address + 1). The ports
-  // and the ALU are computed inside
-  // this block, only when a cycle ends (a Verilated model then evaluates
-  // them in one T-state of three to six, not at every clock).
-  integer b;
-  always @(posedge i_clk) begin : regfile
-    reg        rf_we, pair_we, f_we;
-    reg [ 2:0] rf_wa;
-    reg [ 7:0] rf_wd, f_wd;
-    reg [ 1:0] pair_wa;
-    reg [15:0] pair_wd, pair_v, alu_v;
-    reg [16:0] dad_sum;
-    reg [ 2:0] alu_src;
-    if (i_rst) begin
+      // PC, SP, register file, W Z.
+      pc_q <= 16'h0000;
+      sp_q <= 16'h0000;
       rf_q <= 64'h0;
       w_q <= 8'h00;
       z_q <= 8'h00;
     end else if (i_dbg_load) begin
+      pc_q <= i_dbg_pc;
+      sp_q <= i_dbg_sp;
       rf_q <= i_dbg_regs;
-    end else if (end_work) begin
-      // The ALU's register operand: DDD for INR / DCR, SSS otherwise (6:
-      // M, the byte read).
-      alu_src = (ir_q[7:6] == 2'b00) ? ddd : sss;
-      // The ALU only for the classes whose result it is (a Verilated model
-      // skips it at the end of other cycles; its value is unused there).
-      alu_v = 16'h0000;
-      if (is_alu_r | is_alu_m | is_alu_i | is_incdec_r | is_incdec_m | is_acc)
-        alu_v = alu_ir(ir_q, (alu_src == 3'd6) ? i_din : r8(alu_src), r8(R_A), r8(R_F));
-      pair_v = (rp == 2'd0) ? {r8(R_B), r8(R_C)} : (rp == 2'd1) ? {r8(R_D), r8(R_E)} : {r8(R_H), r8(R_L)};  // rp 3 (SP): not here
-      dad_sum = {1'b0, {r8(R_H), r8(R_L)}} + {1'b0, (rp == 2'd3) ? sp_q : pair_v};
-      {rf_we, rf_wa, rf_wd} = {1'b0, R_A, alu_v[15:8]};
-      {pair_we, pair_wa, pair_wd} = {1'b0, rp, i_din, z_q};
-      {f_we, f_wd} = {1'b0, alu_v[7:0]};
-      if (end_of) begin
-        if (is_mov_rr) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, r8(sss)};
-        if (is_alu_r) rf_we = (ddd != 3'd7);  // CMP writes only F
-        if (is_incdec_r) {rf_we, rf_wa} = {1'b1, ddd};
-        if (is_acc) rf_we = 1'b1;
-        if (is_rim)
-          {rf_we, rf_wd} = {1'b1, i_sid, r75_latch_q | (i_rst75 & ~r75_prev_q), i_rst65, i_rst55,
-                            rim_after_trap_q ? ie_before_trap_q : ie_q, masks_q};
-        if (is_inx && rp != 2'd3) {pair_we, pair_wd} = {1'b1, pair_v + 16'd1};
-        if (is_dcx && rp != 2'd3) {pair_we, pair_wd} = {1'b1, pair_v - 16'd1};
-        if (is_alu_r | is_incdec_r | is_acc) f_we = 1'b1;
-      end else begin
-        if (is_mov_rm || is_mvi_r) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, i_din};
-        if (is_alu_m || is_alu_i) rf_we = (ddd != 3'd7);
-        if (is_ldax || (is_in && mc_2)) {rf_we, rf_wd} = {1'b1, i_din};
-        if (is_direct && mc_3 && ir_q[3]) {rf_we, rf_wa, rf_wd} = {1'b1, ir_q[4] ? R_A : R_L, i_din};
-        if (is_direct && mc_4 && ir_q[3]) {rf_we, rf_wa, rf_wd} = {1'b1, R_H, i_din};
-        if (is_pop && mc_2 && rp == 2'd3) {rf_we, rf_wd} = {1'b1, i_din};
-        if (mc_2 && rp != 2'd3 && (is_lxi || is_pop)) pair_we = 1'b1;
-        if (mc_2 && is_dad) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, dad_sum[15:0]};
-        if (mc_4 && is_xthl) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, {w_q, z_q}};
-        if (is_alu_m | is_alu_i | (is_incdec_m & mc_1)) f_we = 1'b1;
-        if (is_dad && mc_2) {f_we, f_wd} = {1'b1, rf_q[RF_F + 7:RF_F + 1], dad_sum[16]};
-        if (is_pop && mc_2 && rp == 2'd3) {f_we, f_wd} = {1'b1, z_q & 8'hD5};
-        if (mc_1 && (is_mvi_m | is_lxi | is_direct | is_pop_ret | is_jcc | is_jmp |
-                     (is_out | is_in) | is_xthl | (is_ccc | is_call)))
-          z_q <= i_din;
-        if (mc_1 && is_incdec_m) z_q <= alu_v[15:8];
-        if (mc_2 && (is_direct | is_xthl | (is_ccc | is_call))) w_q <= i_din;
-        if (mc_3 && is_direct && !ir_q[4]) {w_q, z_q} <= {w_q, z_q} + 16'd1;
+    end
+  end
+
+
+  // Instruction register and its decoded classes (cpu8085_decode.vh), in
+  // a block of their own (a Verilated model then reads the classes' and
+  // the opcode fields' wires in the block above where they are used, not
+  // as variables computed at every clock): the opcode at the end of T3 of
+  // the fetch / INTA; a TRAP / RST x.5 acknowledge runs as RST 7 (FF),
+  // loaded at the end of its first cycle's T2 (nothing reads the classes
+  // before that cycle ends; its kind is known from T2 on).
+  always @(posedge i_clk) begin : instruction
+    if (i_rst) begin
+      ir_q <= 8'h00;
+      cls_q <= decode(8'h00);
+    end else if (!i_dbg_load && mc_q == 3'd0) begin
+      if (t_q == 3'd2 && kind_q == K_IACK) begin
+        ir_q <= 8'hFF;
+        cls_q <= decode(8'hFF);
       end
-`ifdef FORMAL
-      // The byte and pair write ports never address F (index 6, pair 3).
-      assert (!rf_we || rf_wa != R_F);
-      assert (!pair_we || pair_wa != 2'd3);
-`endif
-      // F is written by its own port only: the byte and pair ports never
-      // address it (asserted above), the guards tell synthesis so.
-      // One enable per byte and per pair (what the register file's
-      // address decode was as an array).
-      for (b = 0; b < 8; b = b + 1)
-        if (rf_we && rf_wa != R_F && rf_pos(rf_wa) == b[2:0]) rf_q[8*b +: 8] <= rf_wd;
-      for (b = 0; b < 3; b = b + 1)  // BC at bits 47:32, DE 31:16, HL 15:0
-        if (pair_we && pair_wa == b[1:0]) rf_q[16*(2-b) +: 16] <= pair_wd;
-      if (f_we) rf_q[RF_F + 7:RF_F] <= f_wd;
-      if (end_of && is_xchg) rf_q[31:0] <= {rf_q[15:0], rf_q[31:16]};  // DE <-> HL
+      if (t_q == 3'd3 && (kind_q == K_INSTR || kind_q == K_INTR)) begin
+        ir_q <= i_din;
+        cls_q <= decode(i_din);
+      end
     end
   end
 
@@ -750,7 +760,7 @@ module cpu8085 (
 
   // The unit ends with this T-state.
   wire f_unit_end = unit_t1 ? (kind_of(irq_decide(i_trap, i_rst75, i_rst65, i_rst55, i_intr)) == K_IDLE)
-                            : (cyc_end_later && last_q);
+                            : ((t_q == len_q) && last_q);
   // unit_t1 is the first T-state of a unit.
   always @* if (f_past_valid) assert (unit_t1 == (mc_q == 3'd0 && t_q == 3'd1));
   // T-states of the current unit before this one.

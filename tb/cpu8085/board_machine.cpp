@@ -11,15 +11,35 @@
 #include "one_eval_clock.hpp"
 #include "sw8085/interp/host.hpp"
 
+#if VERILATOR_VERSION_INTEGER == 5006000
+// The model's rising-edge region (one_eval_clock.hpp): the input region
+// (the mailbox's write port follows the host's pins) then the NBA region,
+// each under its one trigger, as the model's eval() runs them.
+void Vboard8085___024root___eval_ico(Vboard8085___024root* vlSelf);
+void Vboard8085___024root___eval_nba(Vboard8085___024root* vlSelf);
+#endif
+
 namespace board8085 {
 
 namespace {
+
+#if VERILATOR_VERSION_INTEGER == 5006000
+void posedge(Vboard8085___024root* r) {
+  r->__VicoTriggered.at(0) = true;
+  Vboard8085___024root___eval_ico(r);
+  r->__VnbaTriggered.at(0) = true;
+  Vboard8085___024root___eval_nba(r);
+}
+constexpr cpu8085::OneEvalClock<Vboard8085>::Posedge kPosedge = &posedge;
+#else
+constexpr cpu8085::OneEvalClock<Vboard8085>::Posedge kPosedge = nullptr;
+#endif
 
 constexpr std::uint16_t kRamBase = 0x2000, kRamSize = 0x800, kMailbox = 0x3000;
 
 class BoardMachine final : public i8085::Machine {
  public:
-  explicit BoardMachine(i8085::Bus& bus) : bus_(bus), h_("", "board"), clock_(h_, !contour::tb::fst_request("").empty()) {
+  explicit BoardMachine(i8085::Bus& bus) : bus_(bus), h_("", "board"), clock_(h_, !contour::tb::fst_request("").empty(), kPosedge) {
     // The host's own bus (sw8085/interp): its mailbox bytes are compared
     // with one memcmp per step instead of 256 virtual reads.
     if (auto* board_bus = dynamic_cast<contour::sw8085::BoardBus*>(&bus)) host_mailbox_ = board_bus->mailbox().data();

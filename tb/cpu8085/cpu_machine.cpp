@@ -9,10 +9,26 @@
 #include "harness.hpp"
 #include "one_eval_clock.hpp"
 
+#if VERILATOR_VERSION_INTEGER == 5006000
+// The model's rising-edge region (one_eval_clock.hpp): the NBA region
+// under its one trigger, the rising edge of i_clk (the model has no input
+// region: no logic follows a pin).
+void Vcpu8085___024root___eval_nba(Vcpu8085___024root* vlSelf);
+#endif
+
 namespace cpu8085 {
 
-
 namespace {
+
+#if VERILATOR_VERSION_INTEGER == 5006000
+void posedge(Vcpu8085___024root* r) {
+  r->__VnbaTriggered.at(0) = true;
+  Vcpu8085___024root___eval_nba(r);
+}
+constexpr OneEvalClock<Vcpu8085>::Posedge kPosedge = &posedge;
+#else
+constexpr OneEvalClock<Vcpu8085>::Posedge kPosedge = nullptr;
+#endif
 
 // o_cycle of cpu8085.v: a memory read that is not an opcode fetch.
 constexpr int kCycleMr = 1;
@@ -31,7 +47,7 @@ struct UnitBytes {
 class CpuMachine final : public i8085::Machine {
  public:
   CpuMachine(i8085::Bus& bus, const std::string& fst_path)
-      : bus_(bus), h_(fst_path, "cpu"), clock_(h_, !contour::tb::fst_request(fst_path).empty()) {
+      : bus_(bus), h_(fst_path, "cpu"), clock_(h_, !contour::tb::fst_request(fst_path).empty(), kPosedge) {
     reset();
   }
 

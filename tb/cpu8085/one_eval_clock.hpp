@@ -10,6 +10,16 @@
 // It falls back to the harness's two evals (clock_low, clock_high) when a
 // waveform is written (it shows both edges) and when the model has no such
 // member (another Verilator release): the compiler picks the path.
+//
+// A machine may also give it its model's rising-edge region itself
+// (`posedge`, Verilator 5.006's _eval_nba, with _eval_ico before it on a
+// model that has one, each under its trigger): the eval() of such a model
+// runs those two and nothing else on a rising edge, but spends about 130
+// x86 instructions in its trigger loops, eval_step and endOfEval around
+// them (docs/cpu8085.md "Speed"). The machine declares those functions
+// only under VERILATOR_VERSION_INTEGER 5006000 (another release: eval()).
+// The first rising edge still goes through eval() (the model's initial
+// evaluation, if the harness has not done it).
 #pragma once
 
 #include <type_traits>
@@ -36,8 +46,12 @@ class OneEvalClock {
   static_assert(sizeof(Root) > 0, "include the model's V*___024root.h");
   static constexpr bool kSupported = HasClockTrigger<Root>::value;
 
+  // The model's rising-edge region, called instead of eval() (see above).
+  using Posedge = void (*)(Root*);
+
   // `waveform`: a waveform is being written (the two-eval path).
-  OneEvalClock(contour::tb::Harness<V>& h, bool waveform) : h_(h), one_eval_(kSupported && !waveform) {}
+  OneEvalClock(contour::tb::Harness<V>& h, bool waveform, Posedge posedge = nullptr)
+      : h_(h), one_eval_(kSupported && !waveform), posedge_(posedge) {}
 
   bool one_eval() const { return one_eval_; }
 
@@ -50,9 +64,14 @@ class OneEvalClock {
     if constexpr (kSupported) {
       if (one_eval_) {
         V& top = h_.top();
-        top.rootp->__Vtrigrprev__TOP__i_clk = 0;
         top.i_clk = 1;
+        if (posedge_ != nullptr && primed_) {
+          posedge_(top.rootp);
+          return;
+        }
+        top.rootp->__Vtrigrprev__TOP__i_clk = 0;
         top.eval();
+        primed_ = true;
         return;
       }
     }
@@ -62,6 +81,8 @@ class OneEvalClock {
  private:
   contour::tb::Harness<V>& h_;
   bool one_eval_;
+  Posedge posedge_;
+  bool primed_ = false;  // one eval() done
 };
 
 }  // namespace cpu8085
