@@ -128,6 +128,7 @@ module interp3_core #(
   // a >> 1, b >> 1, ~(b >> 1), ~(c >> 1) and the carry-ins that make
   // a' + ~b' + ci the initial half (a - b - e0) / 2.
   reg [HW-1:0] oa_q, ob_q, onb_q, onc_q;
+  reg [HW-1:0] oa2_q, onc2_q;          // copies for exz (against fan-out)
   reg cixy_q, cixz_q, ciyz_q;
   // Load phases: p1_q after L0, p2_q after L1, p3_q after L2, p4_q after
   // L3; ldph_q any, pre_q = p1 | p2 | p3; f22_q = p1 | p3 | p4 (the
@@ -135,6 +136,7 @@ module interp3_core #(
   reg p1_q, p2_q, p3_q, p4_q, ldph_q, pre_q, f22_q;
   // Interpolation state.
   reg [W-1:0] x_q, y_q, z_q;          // distance travelled
+  reg lded_q;                         // a move was loaded since the reset
   reg rx_q, ry_q, rz_q;               // distance left: x < a
   reg lx_q, ly_q, lz_q;               // last step: x + 1 == a
   reg [HW-1:0] hxy_q, hxz_q, hyz_q;   // halves of exy, exz, eyz
@@ -151,6 +153,8 @@ module interp3_core #(
   // (X, X, Y: s_q's bit); 1 while loading. The set conditions differ
   // (by terms that never hold) so that synthesis keeps them apart.
   reg gxy_q, gxz_q, gyz_q;
+  reg gz_q;                           // s_q's Z bit, 1 while loading (the selection's)
+  reg ox_q, oy_q, oz_q;               // no distance left on the other two axes: ~ry & ~rz ...
   reg act_q;                          // ready and not done
   // Registered step enables: the axis that steps on a command (act_q and
   // s_q), and whether a command changes each discriminant.
@@ -183,7 +187,7 @@ module interp3_core #(
   // d11, d12, d22 are the initial half after L2, and the state is
   // prepared after L4.
   wire [HW-1:0] o1xy = onb_q, o2xy = oa_q;
-  wire [HW-1:0] o1xz = onc_q, o2xz = oa_q;
+  wire [HW-1:0] o1xz = onc2_q, o2xz = oa2_q;
   wire [HW-1:0] o1yz = onc_q, o2yz = ob_q;
   wire [DW-1:0] sxy1 = sadd(dxy11_q, o1xy, cixy_q), sxy2 = sadd(dxy11_q, o2xy, 1'b0);
   wire [DW-1:0] sxy3 = sadd(dxy22_q, o1xy, cixy_q), sxy4 = sadd(dxy22_q, o2xy, 1'b0);
@@ -224,44 +228,46 @@ module interp3_core #(
   wire gxy1 = cxy1_q[HW-1], gxy2 = cxy2_q[HW-1], gxy0 = hxy_q[HW-1];  // 1: negative
   wire gxz1 = cxz1_q[HW-1], gxz2 = cxz2_q[HW-1], gxz0 = hxz_q[HW-1];
   wire gyz1 = cyz1_q[HW-1], gyz2 = cyz2_q[HW-1], gyz0 = hyz_q[HW-1];
-  wire selx_n = ((sx | p4_q) & ~gxy1 & ~gxz1) | (sy & ~gxy2 & ~gxz0) | (sz & ~gxy0 & ~gxz2);
-  wire sely_n = (sx & gxy1 & ~gyz0) | ((sy | p4_q) & gxy2 & ~gyz1) | (sz & gxy0 & ~gyz2);
-  wire selz_n = (sx & gxz1 & gyz0) | (sy & gxz0 & gyz1) | ((sz | p4_q) & gxz2 & gyz2);
+  // (sx | p4_q) is gxy_q, (sy | p4_q) gyz_q, (sz | p4_q) gz_q whenever the
+  // selection is taken (p4_q or act_q): three inputs per product.
+  wire selx_n = (gxy_q & ~gxy1 & ~gxz1) | (sy & ~gxy2 & ~gxz0) | (sz & ~gxy0 & ~gxz2);
+  wire sely_n = (sx & gxy1 & ~gyz0) | (gyz_q & gxy2 & ~gyz1) | (sz & gxy0 & ~gyz2);
+  wire selz_n = (sx & gxz1 & gyz0) | (sy & gxz0 & gyz1) | (gz_q & gxz2 & gyz2);
   // Distance left after the step on some axis: the step's own flag becomes
   // !l, the others stay.
-  wire act_n = (sx & (~lx_q | ry_q | rz_q)) | (sy & (rx_q | ~ly_q | rz_q))
-             | (sz & (rx_q | ry_q | ~lz_q)) | (p4_q & (rx_q | ry_q | rz_q));
+  // The move ends with this clock's step if that is the last of its axis
+  // (l) and the other axes have none left (o, registers); at L4 (s_q =
+  // 000) if it is the zero move: two LUT levels.
+  wire act_n = ~((sx & lx_q & ox_q) | (sy & ly_q & oy_q) | (sz & lz_q & oz_q) | (p4_q & ~(rx_q | ry_q | rz_q)));
 
   wire [W-1:0] one_w = {{(W-1){1'b0}}, 1'b1};
   wire [W-1:0] two_w = {{(W-2){1'b0}}, 2'b10};
 
-  // Move constants.
+  // Move constants: read only after a load (not reset; so that the
+  // load alone enables them). The signs and low bits are outputs: reset.
   always @(posedge i_clk) begin
-    if (i_rst) begin
-      a_q <= {W{1'b0}};
-      b_q <= {W{1'b0}};
-      nbz_q <= {W{1'b1}};
-      ncz_q <= {W{1'b1}};
-      xneg_q <= 1'b0;
-      yneg_q <= 1'b0;
-      zneg_q <= 1'b0;
-      am2_q <= ~one_w;  // 0 - 2
-      bm2_q <= ~one_w;
-      cm2_q <= ~one_w;
-      e0xy_q <= 1'b0;
-      e0xz_q <= 1'b0;
-      e0yz_q <= 1'b0;
-    end else if (i_load) begin
+    if (i_load) begin
       a_q <= i_xe;
       b_q <= i_ye;
       nbz_q <= ~i_ye;
       ncz_q <= ~i_ze;
-      xneg_q <= i_xneg;
-      yneg_q <= i_yneg;
-      zneg_q <= i_zneg;
       am2_q <= i_xe - two_w;
       bm2_q <= i_ye - two_w;
       cm2_q <= i_ze - two_w;
+    end
+  end
+  always @(posedge i_clk) begin
+    if (i_rst) begin
+      xneg_q <= 1'b0;
+      yneg_q <= 1'b0;
+      zneg_q <= 1'b0;
+      e0xy_q <= 1'b0;
+      e0xz_q <= 1'b0;
+      e0yz_q <= 1'b0;
+    end else if (i_load) begin
+      xneg_q <= i_xneg;
+      yneg_q <= i_yneg;
+      zneg_q <= i_zneg;
       e0xy_q <= i_xe[0] ^ i_ye[0];
       e0xz_q <= i_xe[0] ^ i_ze[0];
       e0yz_q <= i_ye[0] ^ i_ze[0];
@@ -279,6 +285,14 @@ module interp3_core #(
       cixy_q <= ~i_load | i_xe[0] | ~i_ye[0];
       cixz_q <= ~i_load | i_xe[0] | ~i_ze[0];
       ciyz_q <= ~i_load | i_ye[0] | ~i_ze[0];
+    end
+  end
+  // Copies of a and ~c for exz (against fan-out; their enable differs by a
+  // term that never holds, so that synthesis keeps them apart).
+  always @(posedge i_clk) begin
+    if (i_load | p2_q | (p4_q & act_q)) begin
+      oa2_q <= i_load ? {2'b00, i_xe[W-1:1]} : {1'b0, a_q};
+      onc2_q <= i_load ? {2'b11, ~i_ze[W-1:1]} : {1'b1, ncz_q};
     end
   end
 
@@ -303,27 +317,31 @@ module interp3_core #(
     end
   end
 
-  // Distance travelled: cleared by a load, counted by the steps.
+  // Distance travelled: cleared by a load, counted by the steps. Not
+  // reset (so that their enables are i_load | i_cmd & m): lded_q, reset,
+  // set by a load, shows 0 on the outputs until the first load.
   always @(posedge i_clk) begin
-    if (i_rst | i_load) x_q <= {W{1'b0}};
+    if (i_load) x_q <= {W{1'b0}};
     else if (mv_x) x_q <= x_q + one_w;
   end
   always @(posedge i_clk) begin
-    if (i_rst | i_load) y_q <= {W{1'b0}};
+    if (i_load) y_q <= {W{1'b0}};
     else if (mv_y) y_q <= y_q + one_w;
   end
   always @(posedge i_clk) begin
-    if (i_rst | i_load) z_q <= {W{1'b0}};
+    if (i_load) z_q <= {W{1'b0}};
     else if (mv_z) z_q <= z_q + one_w;
+  end
+  always @(posedge i_clk) begin
+    if (i_rst) lded_q <= 1'b0;
+    else if (i_load) lded_q <= 1'b1;
   end
 
   // Distance-left and last-step flags: set by a load, updated by a step
-  // of their axis (x + 1 == a after the step: x == a - 2 before it).
+  // of their axis (x + 1 == a after the step: x == a - 2 before it). Not
+  // reset: o_done is 1 until the first load (lded_q).
   always @(posedge i_clk) begin
-    if (i_rst) begin
-      rx_q <= 1'b0;
-      lx_q <= 1'b0;
-    end else if (i_load) begin
+    if (i_load) begin
       rx_q <= |i_xe;
       lx_q <= i_xe == one_w;
     end else if (mv_x) begin
@@ -332,10 +350,7 @@ module interp3_core #(
     end
   end
   always @(posedge i_clk) begin
-    if (i_rst) begin
-      ry_q <= 1'b0;
-      ly_q <= 1'b0;
-    end else if (i_load) begin
+    if (i_load) begin
       ry_q <= |i_ye;
       ly_q <= i_ye == one_w;
     end else if (mv_y) begin
@@ -344,10 +359,7 @@ module interp3_core #(
     end
   end
   always @(posedge i_clk) begin
-    if (i_rst) begin
-      rz_q <= 1'b0;
-      lz_q <= 1'b0;
-    end else if (i_load) begin
+    if (i_load) begin
       rz_q <= |i_ze;
       lz_q <= i_ze == one_w;
     end else if (mv_z) begin
@@ -425,6 +437,19 @@ module interp3_core #(
     if (i_load | ldph_q | go) gyz_q <= (i_load | pre_q) | sely_n;
   end
   always @(posedge i_clk) begin
+    if (i_load | ldph_q | go) gz_q <= (i_load | pre_q) | selz_n;
+  end
+  // ox = ~ry & ~rz etc. after the flags' change: taken at L1 (the flags
+  // are the load's), then by the steps of the other axes (a Y step makes
+  // ry = ~ly). Read at L4 and while act_q (not reset).
+  always @(posedge i_clk) begin
+    if (p1_q | go) begin
+      ox_q <= p1_q ? ~ry_q & ~rz_q : my_q ? ly_q & ~rz_q : mz_q ? ~ry_q & lz_q : ox_q;
+      oy_q <= p1_q ? ~rx_q & ~rz_q : mx_q ? lx_q & ~rz_q : mz_q ? ~rx_q & lz_q : oy_q;
+      oz_q <= p1_q ? ~rx_q & ~ry_q : mx_q ? lx_q & ~ry_q : my_q ? ~rx_q & ly_q : oz_q;
+    end
+  end
+  always @(posedge i_clk) begin
     if (i_rst | i_load) begin
       act_q <= 1'b0;
       {mx_q, my_q, mz_q} <= 3'b000;
@@ -458,11 +483,11 @@ module interp3_core #(
   assign o_dir_x = xneg_q;
   assign o_dir_y = yneg_q;
   assign o_dir_z = zneg_q;
-  assign o_done = ~(rx_q | ry_q | rz_q);
+  assign o_done = ~lded_q | ~(rx_q | ry_q | rz_q);
   assign o_ready = ~ldph_q;
-  assign o_x = x_q;
-  assign o_y = y_q;
-  assign o_z = z_q;
+  assign o_x = x_q & {W{lded_q}};
+  assign o_y = y_q & {W{lded_q}};
+  assign o_z = z_q & {W{lded_q}};
   assign o_exy = {hxy_q, e0xy_q};
   assign o_exz = {hxz_q, e0xz_q};
   assign o_eyz = {hyz_q, e0yz_q};
@@ -479,14 +504,23 @@ module interp3_core #(
   // addition ever overflowed.
   localparam integer EW = W + 2;
   localparam integer FW = 2 * W + 3;
-  wire [W-1:0] c_f = ~ncz_q;  // |ZE|
-  wire [W:0] x2_f = {x_q, 1'b1};  // 2x + 1
-  wire [W:0] y2_f = {y_q, 1'b1};
-  wire [W:0] z2_f = {z_q, 1'b1};
-  wire [2*W:0] ay_f = a_q * y2_f;
-  wire [2*W:0] az_f = a_q * z2_f;
-  wire [2*W:0] bx_f = b_q * x2_f;
-  wire [2*W:0] bz_f = b_q * z2_f;
+  // The move: the last one loaded, the zero move before any load (the
+  // constants' registers are not reset).
+  reg loaded_f;
+  always @(posedge i_clk) begin
+    if (i_rst) loaded_f <= 1'b0;
+    else if (i_load) loaded_f <= 1'b1;
+  end
+  wire [W-1:0] a_f = loaded_f ? a_q : {W{1'b0}};  // |XE|
+  wire [W-1:0] b_f = loaded_f ? b_q : {W{1'b0}};  // |YE|
+  wire [W-1:0] c_f = loaded_f ? ~ncz_q : {W{1'b0}};  // |ZE|
+  wire [W:0] x2_f = {o_x, 1'b1};  // 2x + 1
+  wire [W:0] y2_f = {o_y, 1'b1};
+  wire [W:0] z2_f = {o_z, 1'b1};
+  wire [2*W:0] ay_f = a_f * y2_f;
+  wire [2*W:0] az_f = a_f * z2_f;
+  wire [2*W:0] bx_f = b_f * x2_f;
+  wire [2*W:0] bz_f = b_f * z2_f;
   wire [2*W:0] cx_f = c_f * x2_f;
   wire [2*W:0] cy_f = c_f * y2_f;
   wire [FW-1:0] exy_x = {2'b00, ay_f} - {2'b00, bx_f};
@@ -496,22 +530,22 @@ module interp3_core #(
   wire signed [FW-1:0] exy_f = $signed({{(FW-EW){o_exy[EW-1]}}, o_exy});
   wire signed [FW-1:0] exz_f = $signed({{(FW-EW){o_exz[EW-1]}}, o_exz});
   wire signed [FW-1:0] eyz_f = $signed({{(FW-EW){o_eyz[EW-1]}}, o_eyz});
-  wire signed [FW-1:0] a2_f = $signed({{(FW-W-1){1'b0}}, a_q, 1'b0});
-  wire signed [FW-1:0] b2_f = $signed({{(FW-W-1){1'b0}}, b_q, 1'b0});
+  wire signed [FW-1:0] a2_f = $signed({{(FW-W-1){1'b0}}, a_f, 1'b0});
+  wire signed [FW-1:0] b2_f = $signed({{(FW-W-1){1'b0}}, b_f, 1'b0});
   wire signed [FW-1:0] c2_f = $signed({{(FW-W-1){1'b0}}, c_f, 1'b0});
   // The initial discriminants a - b, a - c, b - c in W + 2 bits, and
   // their halves (the initial halves).
-  wire [EW-1:0] dxy_f = {2'b00, a_q} - {2'b00, b_q};
-  wire [EW-1:0] dxz_f = {2'b00, a_q} - {2'b00, c_f};
-  wire [EW-1:0] dyz_f = {2'b00, b_q} - {2'b00, c_f};
+  wire [EW-1:0] dxy_f = {2'b00, a_f} - {2'b00, b_f};
+  wire [EW-1:0] dxz_f = {2'b00, a_f} - {2'b00, c_f};
+  wire [EW-1:0] dyz_f = {2'b00, b_f} - {2'b00, c_f};
   wire [HW-1:0] ixy_f = dxy_f[EW-1:1], ixz_f = dxz_f[EW-1:1], iyz_f = dyz_f[EW-1:1];
   // The updates in HW bits, and the operands while loading.
-  wire [HW-1:0] a_h = {1'b0, a_q};
-  wire [HW-1:0] b_h = {1'b0, b_q};
+  wire [HW-1:0] a_h = {1'b0, a_f};
+  wire [HW-1:0] b_h = {1'b0, b_f};
   wire [HW-1:0] nb_f = {HW{1'b0}} - b_h;
   wire [HW-1:0] nc_f = {HW{1'b0}} - {1'b0, c_f};
-  wire [HW-1:0] ah_f = {2'b00, a_q[W-1:1]};
-  wire [HW-1:0] bh_f = {2'b00, b_q[W-1:1]};
+  wire [HW-1:0] ah_f = {2'b00, a_f[W-1:1]};
+  wire [HW-1:0] bh_f = {2'b00, b_f[W-1:1]};
   wire [HW-1:0] nbh_f = ~bh_f;
   wire [HW-1:0] nch_f = ~{2'b00, c_f[W-1:1]};
   wire [HW-1:0] zero_h = {HW{1'b0}};
@@ -519,9 +553,9 @@ module interp3_core #(
   wire selx_f = rx_q & (~ry_q | ~hxy_q[HW-1]) & (~rz_q | ~hxz_q[HW-1]);
   wire sely_f = ~selx_f & ry_q & (~rz_q | ~hyz_q[HW-1]);
   wire selz_f = ~selx_f & ~sely_f & rz_q;
-  wire [W:0] xp1_f = {1'b0, x_q} + {{W{1'b0}}, 1'b1};
-  wire [W:0] yp1_f = {1'b0, y_q} + {{W{1'b0}}, 1'b1};
-  wire [W:0] zp1_f = {1'b0, z_q} + {{W{1'b0}}, 1'b1};
+  wire [W:0] xp1_f = {1'b0, o_x} + {{W{1'b0}}, 1'b1};
+  wire [W:0] yp1_f = {1'b0, o_y} + {{W{1'b0}}, 1'b1};
+  wire [W:0] zp1_f = {1'b0, o_z} + {{W{1'b0}}, 1'b1};
 
   reg past_valid_f;
   initial past_valid_f = 1'b0;
@@ -536,9 +570,14 @@ module interp3_core #(
   always @(*) begin
     if (past_valid_f) begin
       // The move's constants and the load phases.
-      assert (nbz_q == ~b_q);
-      assert (am2_q == a_q - two_w && bm2_q == b_q - two_w && cm2_q == c_f - two_w);
-      assert (e0xy_q == (a_q[0] ^ b_q[0]) && e0xz_q == (a_q[0] ^ c_f[0]) && e0yz_q == (b_q[0] ^ c_f[0]));
+      assert (lded_q == loaded_f);
+      if (loaded_f) begin
+        assert (nbz_q == ~b_f);
+        assert (am2_q == a_f - two_w && bm2_q == b_f - two_w && cm2_q == c_f - two_w);
+      end else begin
+        assert (!ldph_q && !act_q);
+      end
+      assert (e0xy_q == (a_f[0] ^ b_f[0]) && e0xz_q == (a_f[0] ^ c_f[0]) && e0yz_q == (b_f[0] ^ c_f[0]));
       assert ({2'b00, p1_q} + {2'b00, p2_q} + {2'b00, p3_q} + {2'b00, p4_q} <= 3'd1);
       assert (ldph_q == (p1_q | p2_q | p3_q | p4_q));
       assert (f22_q == (p1_q | p3_q | p4_q) && pre_q == (p1_q | p2_q | p3_q));
@@ -546,28 +585,33 @@ module interp3_core #(
       assert ({kxy_q, kxz_q, kyz_q} == ({~sz, ~sy, ~sx} & {3{act_q}}));
       assert ({kdxy_q, kdxz_q, kdyz_q} == {kxy_q, kxz_q, kyz_q});
       // The selects: 1 while loading, s_q's bit while a step can come.
-      if (ldph_q) assert (gxy_q && gxz_q && gyz_q);
-      if (act_q) assert (gxy_q == sx && gxz_q == sx && gyz_q == sy);
+      if (ldph_q) assert (gxy_q && gxz_q && gyz_q && gz_q);
+      if (act_q) assert (gxy_q == sx && gxz_q == sx && gyz_q == sy && gz_q == sz);
+      if (ldph_q & ~p1_q | act_q) assert (ox_q == (~ry_q & ~rz_q) && oy_q == (~rx_q & ~rz_q) && oz_q == (~rx_q & ~ry_q));
       // The operands: the halves after L0 and L1, then the updates.
       if (p1_q | p2_q) begin
         assert (oa_q == ah_f && ob_q == bh_f && onb_q == nbh_f && onc_q == nch_f);
-        assert (cixy_q == (a_q[0] | ~b_q[0]) && cixz_q == (a_q[0] | ~c_f[0]) && ciyz_q == (b_q[0] | ~c_f[0]));
+        assert (oa2_q == oa_q && onc2_q == onc_q);
+        assert (cixy_q == (a_f[0] | ~b_f[0]) && cixz_q == (a_f[0] | ~c_f[0]) && ciyz_q == (b_f[0] | ~c_f[0]));
       end else if (p3_q | p4_q | act_q) begin
         assert (oa_q == a_h && ob_q == b_h && onb_q + 1'b1 == nb_f && onc_q + 1'b1 == nc_f);
+        assert (oa2_q == oa_q && onc2_q == onc_q);
         assert (cixy_q && cixz_q && ciyz_q);
       end
       // No axis passes its end; the flags are the comparisons they stand for.
-      assert (x_q <= a_q && y_q <= b_q && z_q <= c_f);
-      assert (rx_q == (x_q < a_q) && ry_q == (y_q < b_q) && rz_q == (z_q < c_f));
-      assert (lx_q == (xp1_f == {1'b0, a_q}) && ly_q == (yp1_f == {1'b0, b_q}) && lz_q == (zp1_f == {1'b0, c_f}));
-      assert (o_done == (x_q == a_q && y_q == b_q && z_q == c_f));
+      assert (o_x <= a_f && o_y <= b_f && o_z <= c_f);
+      if (loaded_f) begin
+        assert (rx_q == (o_x < a_f) && ry_q == (o_y < b_f) && rz_q == (o_z < c_f));
+        assert (lx_q == (xp1_f == {1'b0, a_f}) && ly_q == (yp1_f == {1'b0, b_f}) && lz_q == (zp1_f == {1'b0, c_f}));
+      end
+      assert (o_done == (o_x == a_f && o_y == b_f && o_z == c_f));
       // At most one pulse per clock.
       assert (!(o_step_x && o_step_y) && !(o_step_x && o_step_z) && !(o_step_y && o_step_z));
       if (ldph_q) begin
         // Preparing: no step can come; nothing travelled yet.
         assert (!act_q);
         if (!p1_q) assert (s_q == 3'b000);
-        assert (x_q == {W{1'b0}} && y_q == {W{1'b0}} && z_q == {W{1'b0}});
+        assert (o_x == {W{1'b0}} && o_y == {W{1'b0}} && o_z == {W{1'b0}});
         assert (!o_step_x && !o_step_y && !o_step_z);
         // The sums, clock by clock (docs/rtl-3axis.md, "Timing").
         if (p1_q) begin
