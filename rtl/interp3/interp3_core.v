@@ -155,6 +155,7 @@ module interp3_core #(
   reg gxy_q, gxz_q, gyz_q;
   reg gz_q;                           // s_q's Z bit, 1 while loading (the selection's)
   reg ox_q, oy_q, oz_q;               // no distance left on the other two axes: ~ry & ~rz ...
+  reg fx_q, fy_q, fz_q;               // a step on X ends the move: lx & ox ...
   reg act_q;                          // ready and not done
   // Registered step enables: the axis that steps on a command (act_q and
   // s_q), and whether a command changes each discriminant.
@@ -233,12 +234,39 @@ module interp3_core #(
   wire selx_n = (gxy_q & ~gxy1 & ~gxz1) | (sy & ~gxy2 & ~gxz0) | (sz & ~gxy0 & ~gxz2);
   wire sely_n = (sx & gxy1 & ~gyz0) | (gyz_q & gxy2 & ~gyz1) | (sz & gxy0 & ~gyz2);
   wire selz_n = (sx & gxz1 & gyz0) | (sy & gxz0 & gyz1) | (gz_q & gxz2 & gyz2);
-  // Distance left after the step on some axis: the step's own flag becomes
-  // !l, the others stay.
-  // The move ends with this clock's step if that is the last of its axis
-  // (l) and the other axes have none left (o, registers); at L4 (s_q =
-  // 000) if it is the zero move: two LUT levels.
-  wire act_n = ~((sx & lx_q & ox_q) | (sy & ly_q & oy_q) | (sz & lz_q & oz_q) | (p4_q & ~(rx_q | ry_q | rz_q)));
+  // Whether a step can come after this clock's: the move ends with the
+  // step if fx_q (X), fy_q, fz_q (registers: l and no distance left on the
+  // other axes; at L4 all three are "the move is the zero move").
+  wire act_n = ~((gxy_q & fx_q) | (sy & fy_q) | (sz & fz_q));
+  // The step enables of the next clock, gated by act_n, as sums of
+  // products of four registered bits each (s_q one-hot, or p4_q with the
+  // selects g 1): each product a net of its own, so that synthesis maps
+  // each enable in two LUT levels.
+  (* keep *) wire mx1 = gxy_q & ~gxy1 & ~gxz1 & ~fx_q;
+  (* keep *) wire mx2 = sy & ~gxy2 & ~gxz0 & ~fy_q;
+  (* keep *) wire mx3 = sz & ~gxy0 & ~gxz2 & ~fz_q;
+  (* keep *) wire my1 = sx & gxy1 & ~gyz0 & ~fx_q;
+  (* keep *) wire my2 = gyz_q & gxy2 & ~gyz1 & ~fy_q;
+  (* keep *) wire my3 = sz & gxy0 & ~gyz2 & ~fz_q;
+  (* keep *) wire mz1 = sx & gxz1 & gyz0 & ~fx_q;
+  (* keep *) wire mz2 = sy & gxz0 & gyz1 & ~fy_q;
+  (* keep *) wire mz3 = gz_q & gxz2 & gyz2 & ~fz_q;
+  // kxy = act_n & ~selz_n etc.
+  (* keep *) wire kxy1 = sx & ~(gxz1 & gyz0) & ~fx_q;
+  (* keep *) wire kxy2 = sy & ~(gxz0 & gyz1) & ~fy_q;
+  (* keep *) wire kxy3 = gz_q & ~(gxz2 & gyz2) & ~fz_q;
+  (* keep *) wire kxz1 = sx & ~(gxy1 & ~gyz0) & ~fx_q;
+  (* keep *) wire kxz2 = gyz_q & ~(gxy2 & ~gyz1) & ~fy_q;
+  (* keep *) wire kxz3 = sz & ~(gxy0 & ~gyz2) & ~fz_q;
+  (* keep *) wire kyz1 = gxy_q & ~(~gxy1 & ~gxz1) & ~fx_q;
+  (* keep *) wire kyz2 = sy & ~(~gxy2 & ~gxz0) & ~fy_q;
+  (* keep *) wire kyz3 = sz & ~(~gxy0 & ~gxz2) & ~fz_q;
+  wire mx_n = mx1 | mx2 | mx3;
+  wire my_n = my1 | my2 | my3;
+  wire mz_n = mz1 | mz2 | mz3;
+  wire kxy_n = kxy1 | kxy2 | kxy3;
+  wire kxz_n = kxz1 | kxz2 | kxz3;
+  wire kyz_n = kyz1 | kyz2 | kyz3;
 
   wire [W-1:0] one_w = {{(W-1){1'b0}}, 1'b1};
   wire [W-1:0] two_w = {{(W-2){1'b0}}, 2'b10};
@@ -449,6 +477,17 @@ module interp3_core #(
       oz_q <= p1_q ? ~rx_q & ~ry_q : mx_q ? lx_q & ~ry_q : my_q ? ~rx_q & ly_q : oz_q;
     end
   end
+  // fx = lx & ox after the flags' change (at L4 from the load's flags;
+  // an X step makes lx = (x == a - 2), a Y step ox = ly & ~rz, ...); at L3
+  // the zero move's "done" (read at L4 by act_n and the step enables).
+  wire done_n = ~(rx_q | ry_q | rz_q);
+  always @(posedge i_clk) begin
+    if (p3_q | p4_q | go) begin
+      fx_q <= p3_q ? done_n : p4_q ? lx_q & ox_q : mx_q ? (x_q == am2_q) & ox_q : my_q ? lx_q & ly_q & ~rz_q : lx_q & ~ry_q & lz_q;
+      fy_q <= p3_q ? done_n : p4_q ? ly_q & oy_q : my_q ? (y_q == bm2_q) & oy_q : mx_q ? ly_q & lx_q & ~rz_q : ly_q & ~rx_q & lz_q;
+      fz_q <= p3_q ? done_n : p4_q ? lz_q & oz_q : mz_q ? (z_q == cm2_q) & oz_q : mx_q ? lz_q & lx_q & ~ry_q : lz_q & ~rx_q & ly_q;
+    end
+  end
   always @(posedge i_clk) begin
     if (i_rst | i_load) begin
       act_q <= 1'b0;
@@ -456,15 +495,15 @@ module interp3_core #(
       {kxy_q, kxz_q, kyz_q} <= 3'b000;
     end else if (p4_q | go) begin
       act_q <= act_n;
-      {mx_q, my_q, mz_q} <= {selx_n, sely_n, selz_n} & {3{act_n}};
-      {kxy_q, kxz_q, kyz_q} <= {~selz_n, ~sely_n, ~selx_n} & {3{act_n}};
+      {mx_q, my_q, mz_q} <= {mx_n, my_n, mz_n};
+      {kxy_q, kxz_q, kyz_q} <= {kxy_n, kxz_n, kyz_n};
     end
   end
 
   // (The copies' clear differs by a term that never holds: kept apart.)
   always @(posedge i_clk) begin
     if (i_rst | i_load | (p4_q & act_q)) {kdxy_q, kdxz_q, kdyz_q} <= 3'b000;
-    else if (p4_q | go) {kdxy_q, kdxz_q, kdyz_q} <= {~selz_n, ~sely_n, ~selx_n} & {3{act_n}};
+    else if (p4_q | go) {kdxy_q, kdxz_q, kdyz_q} <= {kxy_n, kxz_n, kyz_n};
   end
 
   // Output pulse: the axis that stepped in the previous clock.
@@ -588,6 +627,8 @@ module interp3_core #(
       if (ldph_q) assert (gxy_q && gxz_q && gyz_q && gz_q);
       if (act_q) assert (gxy_q == sx && gxz_q == sx && gyz_q == sy && gz_q == sz);
       if (ldph_q & ~p1_q | act_q) assert (ox_q == (~ry_q & ~rz_q) && oy_q == (~rx_q & ~rz_q) && oz_q == (~rx_q & ~ry_q));
+      if (p4_q) assert (fx_q == ~(rx_q | ry_q | rz_q) && fy_q == fx_q && fz_q == fx_q);
+      if (act_q) assert (fx_q == (lx_q & ox_q) && fy_q == (ly_q & oy_q) && fz_q == (lz_q & oz_q));
       // The operands: the halves after L0 and L1, then the updates.
       if (p1_q | p2_q) begin
         assert (oa_q == ah_f && ob_q == bh_f && onb_q == nbh_f && onc_q == nch_f);

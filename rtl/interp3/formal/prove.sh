@@ -98,7 +98,7 @@ done
 # Mutants: "description|sed expression". Each must make the proof fail.
 mutants=(
   "initial Exy rounded with the low bit of C instead of B|s/cixy_q <= ~i_load | i_xe\[0\] | ~i_ye\[0\];/cixy_q <= ~i_load | i_xe[0] | ~i_ze[0];/"
-  "X step leaves Exz unchanged|s/kxz_q, kyz_q} <= {~selz_n, ~sely_n,/kxz_q, kyz_q} <= {~selz_n, selz_n,/"
+  "X step leaves Exz unchanged|s/wire kxz1 = sx \& ~(gxy1 \& ~gyz0) \& ~fx_q;/wire kxz1 = 1'b0;/"
   "distance-left flag of X cleared one step late|s/rx_q <= ~lx_q;/rx_q <= x_q != a_q;/"
   "selection of Y after an X step ignores the sign of Eyz|s/(sx \& gxy1 \& ~gyz0)/(sx \& gxy1)/"
   "Y update of Exy adds 2B instead of 2A|s/o1xy = onb_q, o2xy = oa_q;/o1xy = onb_q, o2xy = ob_q;/"
