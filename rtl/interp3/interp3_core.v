@@ -122,10 +122,6 @@ module interp3_core #(
   reg [W-1:0] nbz_q, ncz_q;           // ~|YE|, ~|ZE|
   reg xneg_q, yneg_q, zneg_q;
   reg [W-1:0] am2_q, bm2_q, cm2_q;    // a - 2, b - 2, c - 2 (mod 2^W)
-  reg [W-1:0] am3_q, bm3_q, cm3_q;    // a - 3, b - 3, c - 3 (mod 2^W)
-  // The comparisons of the distance travelled in the clock before:
-  // ex2 = (x == a - 2), ex3 = (x == a - 3), registered every clock.
-  reg ex2_q, ex3_q, ey2_q, ey3_q, ez2_q, ez3_q;
   reg e0xy_q, e0xz_q, e0yz_q;         // low bits of the discriminants
   // The adders' operands: from L2 on a, b, ~b, ~c (-b = ~b + 1: the
   // carry-ins ci*_q are 1); in the clocks after L0 and L1 the halves
@@ -274,7 +270,6 @@ module interp3_core #(
 
   wire [W-1:0] one_w = {{(W-1){1'b0}}, 1'b1};
   wire [W-1:0] two_w = {{(W-2){1'b0}}, 2'b10};
-  wire [W-1:0] three_w = {{(W-2){1'b0}}, 2'b11};
 
   // Move constants: read only after a load (not reset; so that the
   // load alone enables them). The signs and low bits are outputs: reset.
@@ -287,9 +282,6 @@ module interp3_core #(
       am2_q <= i_xe - two_w;
       bm2_q <= i_ye - two_w;
       cm2_q <= i_ze - two_w;
-      am3_q <= i_xe - three_w;
-      bm3_q <= i_ye - three_w;
-      cm3_q <= i_ze - three_w;
     end
   end
   always @(posedge i_clk) begin
@@ -373,21 +365,6 @@ module interp3_core #(
     else if (i_load) lded_q <= 1'b1;
   end
 
-  // x == a - 2 now, without a comparator in this clock: x is the x of the
-  // clock before, plus 1 if X stepped at the last edge (o_step_x); valid
-  // from the second clock after a load (the first step comes later).
-  always @(posedge i_clk) begin
-    ex2_q <= x_q == am2_q;
-    ex3_q <= x_q == am3_q;
-    ey2_q <= y_q == bm2_q;
-    ey3_q <= y_q == bm3_q;
-    ez2_q <= z_q == cm2_q;
-    ez3_q <= z_q == cm3_q;
-  end
-  wire eqx = o_step_x ? ex3_q : ex2_q;
-  wire eqy = o_step_y ? ey3_q : ey2_q;
-  wire eqz = o_step_z ? ez3_q : ez2_q;
-
   // Distance-left and last-step flags: set by a load, updated by a step
   // of their axis (x + 1 == a after the step: x == a - 2 before it). Not
   // reset: o_done is 1 until the first load (lded_q).
@@ -397,7 +374,7 @@ module interp3_core #(
       lx_q <= i_xe == one_w;
     end else if (mv_x) begin
       rx_q <= ~lx_q;
-      lx_q <= eqx;
+      lx_q <= x_q == am2_q;
     end
   end
   always @(posedge i_clk) begin
@@ -406,7 +383,7 @@ module interp3_core #(
       ly_q <= i_ye == one_w;
     end else if (mv_y) begin
       ry_q <= ~ly_q;
-      ly_q <= eqy;
+      ly_q <= y_q == bm2_q;
     end
   end
   always @(posedge i_clk) begin
@@ -415,7 +392,7 @@ module interp3_core #(
       lz_q <= i_ze == one_w;
     end else if (mv_z) begin
       rz_q <= ~lz_q;
-      lz_q <= eqz;
+      lz_q <= z_q == cm2_q;
     end
   end
 
@@ -506,9 +483,9 @@ module interp3_core #(
   wire done_n = ~(rx_q | ry_q | rz_q);
   always @(posedge i_clk) begin
     if (p3_q | p4_q | go) begin
-      fx_q <= p3_q ? done_n : p4_q ? lx_q & ox_q : mx_q ? eqx & ox_q : my_q ? lx_q & ly_q & ~rz_q : lx_q & ~ry_q & lz_q;
-      fy_q <= p3_q ? done_n : p4_q ? ly_q & oy_q : my_q ? eqy & oy_q : mx_q ? ly_q & lx_q & ~rz_q : ly_q & ~rx_q & lz_q;
-      fz_q <= p3_q ? done_n : p4_q ? lz_q & oz_q : mz_q ? eqz & oz_q : mx_q ? lz_q & lx_q & ~ry_q : lz_q & ~rx_q & ly_q;
+      fx_q <= p3_q ? done_n : p4_q ? lx_q & ox_q : mx_q ? (x_q == am2_q) & ox_q : my_q ? lx_q & ly_q & ~rz_q : lx_q & ~ry_q & lz_q;
+      fy_q <= p3_q ? done_n : p4_q ? ly_q & oy_q : my_q ? (y_q == bm2_q) & oy_q : mx_q ? ly_q & lx_q & ~rz_q : ly_q & ~rx_q & lz_q;
+      fz_q <= p3_q ? done_n : p4_q ? lz_q & oz_q : mz_q ? (z_q == cm2_q) & oz_q : mx_q ? lz_q & lx_q & ~ry_q : lz_q & ~rx_q & ly_q;
     end
   end
   always @(posedge i_clk) begin
@@ -636,13 +613,6 @@ module interp3_core #(
       if (loaded_f) begin
         assert (nbz_q == ~b_f);
         assert (am2_q == a_f - two_w && bm2_q == b_f - two_w && cm2_q == c_f - two_w);
-        assert (am3_q == a_f - three_w && bm3_q == b_f - three_w && cm3_q == c_f - three_w);
-        if (!p1_q) begin
-          assert (eqx == (o_x == am2_q) && eqy == (o_y == bm2_q) && eqz == (o_z == cm2_q));
-          assert (ex2_q == (o_x - {{(W-1){1'b0}}, o_step_x} == am2_q) && ex3_q == (o_x - {{(W-1){1'b0}}, o_step_x} == am3_q));
-          assert (ey2_q == (o_y - {{(W-1){1'b0}}, o_step_y} == bm2_q) && ey3_q == (o_y - {{(W-1){1'b0}}, o_step_y} == bm3_q));
-          assert (ez2_q == (o_z - {{(W-1){1'b0}}, o_step_z} == cm2_q) && ez3_q == (o_z - {{(W-1){1'b0}}, o_step_z} == cm3_q));
-        end
       end else begin
         assert (!ldph_q && !act_q);
       end
