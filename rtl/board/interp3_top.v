@@ -160,7 +160,7 @@ module interp3_top #(
   wire dda_on = boundary ? q_valid : (i_ce && rem_q != 0);
   wire tick = dda_on && dda_sum >= cycle_w;
   wire to_next = boundary || due_q;        // the tick belongs to the chord not yet loaded
-  wire core_ready;  // interp3_core has prepared the loaded chord (3 clocks after the load)
+  wire core_ready;  // interp3_core has prepared the loaded chord (4 clocks after the load)
   wire cmd = loaded_q && !pop && owed_q != 16'd0 && out_idle && core_ready;
 
   move_fifo #(.WIDTH(QW), .AW(QAW)) u_queue (

@@ -2,7 +2,8 @@
 // (interp3_core_gate, with yosys' iCE40 cell models) side by side under
 // Icarus, the same inputs into both, every output bit compared on every
 // clock after the first reset (where the RTL bit is 0 or 1, the netlist's
-// must equal it; every register of interp3_core is reset, so no RTL X is
+// must equal it; no X reaches interp3_core's outputs after a reset (what
+// is not reset is masked or read only after a load), so no RTL X is
 // expected: an X in the RTL fails too). tb/gate/gate_sim.sh builds and runs it.
 //
 // Plusargs:

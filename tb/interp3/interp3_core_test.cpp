@@ -201,13 +201,13 @@ TEST(Interp3W4, DocumentedTimingOfTheMove2m10) {
   EXPECT_EQ(h.state(), (State3{2, -1, 0, 1, 2, 1, 3, true}));
   EXPECT_FALSE(h.step(true).has_value());
   EXPECT_EQ(h.state(), (State3{2, -1, 0, 1, 2, 1, 3, true}));
-  EXPECT_EQ(h.clocks(), 1u + 1u + 3u + 4u);  // reset, load, three preparing clocks, four command clocks
+  EXPECT_EQ(h.clocks(), 1u + 1u + 4u + 4u);  // reset, load, four preparing clocks, four command clocks
 }
 
 // The preparation after a load, clock by clock (docs/rtl-3axis.md,
-// "Timing"): o_ready low for exactly three clocks, o_done already the new
+// "Timing"): o_ready low for exactly four clocks, o_done already the new
 // move's, and the command held high in those clocks moves nothing; the
-// first pulse comes in the clock after the fourth edge from the load.
+// first pulse comes in the clock after the fifth edge from the load.
 TEST(Interp3W4, CommandsWhilePreparingAreIgnored) {
   H4 h;
   h.load(-3, 0, 1);  // a move to abandon: its state must not leak
@@ -223,7 +223,7 @@ TEST(Interp3W4, CommandsWhilePreparingAreIgnored) {
   t.i_cmd = 1;  // the load wins
   h.tick();
   t.i_load = 0;
-  for (unsigned k = 0; k < 3; ++k) {
+  for (unsigned k = 0; k < 4; ++k) {
     EXPECT_FALSE(h.ready()) << "clock " << k;
     EXPECT_FALSE(h.done()) << "clock " << k;
     EXPECT_EQ(h.strobes(), 0u) << "clock " << k;
@@ -240,7 +240,7 @@ TEST(Interp3W4, CommandsWhilePreparingAreIgnored) {
   EXPECT_EQ(h.step(true), (Pulse{Axis::Y, -1}));
   EXPECT_EQ(h.step(true), (Pulse{Axis::X, +1}));
   EXPECT_TRUE(h.done());
-  // The zero move: done from the clock after its load, ready three later.
+  // The zero move: done from the clock after its load, ready four later.
   t.i_xe = t.i_ye = t.i_ze = 0;
   t.i_load = 1;
   h.tick();

@@ -63,7 +63,7 @@ class Interp3Harness : public tb::Harness<V> {
 
   // Clocks after the load clock in which the core prepares a move
   // (docs/rtl-3axis.md, "Timing").
-  static constexpr unsigned kPrepClocks = 3;
+  static constexpr unsigned kPrepClocks = 4;
 
   bool ready() const { return top().o_ready; }
 

@@ -97,12 +97,13 @@ done
 
 # Mutants: "description|sed expression". Each must make the proof fail.
 mutants=(
-  "initial Exy from A - C instead of A - B|s/dxy_q <= {pre_xy\[HW-1\], pre_xy\[HW-1:1\]};/dxy_q <= {pre_xz[HW-1], pre_xz[HW-1:1]};/"
-  "X step leaves Exz unchanged|s/kxz_q, kyz_q} <= {~selz_n, ~sely_n,/kxz_q, kyz_q} <= {~selz_n, selz_n,/"
+  "initial Exy rounded with the low bit of C instead of B|s/cixy_q <= ~i_load | i_xe\[0\] | ~i_ye\[0\];/cixy_q <= ~i_load | i_xe[0] | ~i_ze[0];/"
+  "X step leaves Exz unchanged|s/wire kxz1 = sx \& ~(gxy1 \& ~gyz0) \& ~fx_q;/wire kxz1 = 1'b0;/"
   "distance-left flag of X cleared one step late|s/rx_q <= ~lx_q;/rx_q <= x_q != a_q;/"
   "selection of Y after an X step ignores the sign of Eyz|s/(sx \& gxy1 \& ~gyz0)/(sx \& gxy1)/"
-  "Y candidate of Exy adds 2B instead of 2A|s/oxy2 = (dsxy_e \& dxy_q) | (~dsxy_e \& a_h);/oxy2 = (dsxy_e \& dxy_q) | (~dsxy_e \& b_h);/"
-  "carry-select adder picks the wrong high part|s/csel_add = {lo\[K\] ? hi1 : hi0/csel_add = {lo[K] ? hi0 : hi1/"
+  "Y update of Exy adds 2B instead of 2A|s/o1xy = onb_q, o2xy = oa_q;/o1xy = onb_q, o2xy = ob_q;/"
+  "split adder drops the pending carry of the low part|s/hi = d\[DW-1:K+1\] + o\[HW-1:K\] + {{(HW - K - 1) {1'b0}}, d\[K\]};/hi = d[DW-1:K+1] + o[HW-1:K];/"
+  "preparation: d11 of Exy takes op1 after L1 too|s/(gxy_q \& ~p2_q) ? sxy1 : sxy2;/gxy_q ? sxy1 : sxy2;/"
 )
 n=0
 for m in "${mutants[@]}"; do
