@@ -154,5 +154,5 @@ localparam [6:0] W_LINK_REFUSED = 7'h47;  // word address on the bus
 localparam [7:0] A_LINK_REFUSED = 8'h1C;
 localparam [31:0] R_LINK_REFUSED = 32'h0;
 // Bit n: word address n is readable / writable.
-localparam [127:0] KNOWN_RD = 128'h00000000000000ff0001f3ff0003ffff;
+localparam [127:0] KNOWN_RD = 128'h00000000000000ff0001f3ff00001e0f;
 localparam [127:0] KNOWN_WR = 128'h000000000000001a00000ff40007e1f4;

@@ -91,21 +91,40 @@ module interp_core #(
   // The late queue's head valid alone (one LUT input less before the
   // load decision): it implies the early one's (asserted below).
   wire head_valid = l_valid;
-  wire unused_e_valid = e_valid;
   wire [PRE_BITS-1:0] head = {h_early[EW-1:W+1], h_late[LW-1:PRE_ADD - PRE_FLAGS],
                               h_early[W:0], h_late[PRE_ADD - PRE_FLAGS - 1:0]};
 
+  // The level, the blocks in preparation, in the early queue's memory and
+  // at its head (fifo_level + p_wr), is a counter: a block counts from the
+  // clock after its push to the clock of its pop, so it changes by
+  // push_ok - pop alone (asserted equal below). A register, so no pointer
+  // subtraction and no adder sits before a status read (issue 15: interp_top's
+  // STATUS read, rptr -> used -> level -> the read multiplexer, ~9 ns).
+  reg [QAW+1:0] level_q;
+  always @(posedge i_clk) begin
+    if (i_rst | i_abort) level_q <= {(QAW+2){1'b0}};
+    else if (push_ok != pop) level_q <= pop ? level_q - 1'b1 : level_q + 1'b1;
+  end
+  assign o_level = level_q;
+  wire [QAW+1:0] unused_level = fifo_level;
+  wire [QAW:0] unused_used = mem_used;
+
   // Full counts the blocks still in preparation (the early queue holds a
-  // block from its stage-1 clock on); so does the level. It is a register:
-  // the blocks committed to the memory after this clock, not counting the
-  // one the datapath may take (never too optimistic).
-  wire [QAW+1:0] committed = {1'b0, mem_used} + {{(QAW+1){1'b0}}, p_wr};
+  // block from its stage-1 clock on), like the level. It is a register:
+  // full when the blocks committed to the memory after this clock (the
+  // memory's, mem_used + p_wr = level_q - e_valid, and push_ok), not
+  // counting the one the datapath may take, fill it (never too
+  // optimistic). From the level counter: no pointer subtraction (asserted
+  // equal to the count from the pointers below).
+  // committed >= DEPTH, committed = level_q + push_ok - e_valid, written
+  // as three compares of the counter (no adder).
+  wire full_next = (level_q > DEPTH) | ((level_q == DEPTH) & (push_ok | ~e_valid))
+                 | ((level_q == DEPTH - 1'b1) & push_ok & ~e_valid);
   always @(posedge i_clk) begin
     if (i_rst | i_abort) full_q <= 1'b0;
-    else full_q <= (committed + {{(QAW+1){1'b0}}, push_ok} >= DEPTH);
+    else full_q <= full_next;
   end
   assign o_full = full_q;
-  assign o_level = fifo_level + {{(QAW+1){1'b0}}, p_wr};
 
   interp_dp #(.W(W)) u_dp (
       .i_clk(i_clk), .i_rst(i_rst | i_abort), .i_cmd(i_cmd),
@@ -125,6 +144,15 @@ module interp_core #(
   always @(posedge i_clk) past_valid_f <= 1'b1;
   always @(*) begin
     if (past_valid_f) assert(!l_valid || e_valid);
+  end
+  // The level counter is the count it stands for, and the full flag's
+  // next value, from it, is the test of the memory's count.
+  always @(*) begin
+    if (past_valid_f) begin
+      assert(level_q == fifo_level + {{(QAW+1){1'b0}}, p_wr});
+      assert(full_next == ({2'b00, mem_used} + {{(QAW+2){1'b0}}, p_wr} + {{(QAW+2){1'b0}}, push_ok}
+                           >= {1'b0, DEPTH}));
+    end
   end
 `endif
 

@@ -10,7 +10,8 @@
 
 module interp_top #(
     parameter integer W = 24,   // coordinate width (3..30)
-    parameter integer QAW = 4   // log2 of the queue memory depth
+    parameter integer QAW = 4,  // log2 of the queue memory depth
+    parameter integer TW = 12   // step timing width: STEP_LEN .. DIR_HOLD (regmap.def)
 ) (
     input  wire        i_clk,
     input  wire        i_rst,
@@ -42,17 +43,18 @@ module interp_top #(
   wire [1:0] src;
   wire abort, clear, push;
   wire [31:0] feed;
-  wire [15:0] len, space, setup, hold;
+  wire [TW-1:0] len, space, setup, hold;
   wire [4*W+8:0] blk;  // the staged block (interp_block.vh)
   wire full, overrun;
   wire [QAW+1:0] level;
-  wire [31:0] ovr_count, pos_x, pos_y;
+  wire [15:0] ovr_count;
+  wire [31:0] pos_x, pos_y;
   reg [31:0] moves_q;
 
-  wire cmd_raw, cmd_core;
+  wire cmd_raw, cmd_next, cmd_core;
   wire pulse, pulse_y, pulse_neg, pulse_last, busy;
 
-  wb_regs #(.W(W), .QAW(QAW)) u_regs (
+  wb_regs #(.W(W), .QAW(QAW), .TW(TW)) u_regs (
       .i_clk(i_clk), .i_rst(i_rst),
       .i_wb_cyc(i_wb_cyc), .i_wb_stb(i_wb_stb), .i_wb_we(i_wb_we), .i_wb_adr(i_wb_adr),
       .i_wb_dat(i_wb_dat), .o_wb_dat(o_wb_dat), .o_wb_ack(o_wb_ack),
@@ -64,7 +66,8 @@ module interp_top #(
   );
 
   cmd_gen #(.N(32)) u_cmd (
-      .i_clk(i_clk), .i_rst(i_rst), .i_ce(i_cmd_ce), .i_src(src), .i_pin(i_cmd_pin), .i_inc(feed), .o_cmd(cmd_raw)
+      .i_clk(i_clk), .i_rst(i_rst), .i_ce(i_cmd_ce), .i_src(src), .i_pin(i_cmd_pin), .i_inc(feed), .o_cmd(cmd_raw),
+      .o_cmd_next(cmd_next)
   );
 
   // The core's state outputs are for test benches; the peripheral reports
@@ -83,10 +86,10 @@ module interp_top #(
       .o_yneg(unused_yneg), .o_d(unused_d), .o_q(unused_q), .o_k(unused_k), .o_arc(unused_arc)
   );
 
-  step_out #(.TW(16)) u_out (
+  step_out #(.TW(TW), .OW(16)) u_out (
       .i_clk(i_clk), .i_rst(i_rst), .i_clear(clear),
       .i_len(len), .i_space(space), .i_setup(setup), .i_hold(hold),
-      .i_cmd(cmd_raw), .i_busy(busy), .o_cmd(cmd_core),
+      .i_cmd(cmd_raw), .i_cmd_next(cmd_next), .i_busy(busy), .o_cmd(cmd_core),
       .i_pulse(pulse), .i_pulse_y(pulse_y), .i_pulse_neg(pulse_neg),
       .o_step_x(o_step_x), .o_dir_x(o_dir_x), .o_step_y(o_step_y), .o_dir_y(o_dir_y),
       .o_overrun(overrun), .o_ovr_count(ovr_count)

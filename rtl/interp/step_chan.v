@@ -20,7 +20,7 @@
 `default_nettype none
 
 module step_chan #(
-    parameter integer TW = 16  // timing register width
+    parameter integer TW = 12  // timing register width
 ) (
     input  wire          i_clk,
     input  wire          i_rst,

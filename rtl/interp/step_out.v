@@ -9,7 +9,8 @@
 `default_nettype none
 
 module step_out #(
-    parameter integer TW = 16  // timing register width
+    parameter integer TW = 12,  // timing register width
+    parameter integer OW = 16   // overrun count width (OVR_COUNT, saturating)
 ) (
     input  wire          i_clk,
     input  wire          i_rst,
@@ -18,9 +19,10 @@ module step_out #(
     input  wire [TW-1:0] i_space,
     input  wire [TW-1:0] i_setup,
     input  wire [TW-1:0] i_hold,
-    input  wire          i_cmd,        // command pulse (cmd_gen)
+    input  wire          i_cmd,        // command pulse (cmd_gen's register)
+    input  wire          i_cmd_next,   // i_cmd of the next clock (cmd_gen's o_cmd_next)
     input  wire          i_busy,       // the core has a move running
-    output wire          o_cmd,        // command pulse passed to the core
+    output reg           o_cmd,        // command pulse passed to the core, a register
     input  wire          i_pulse,      // the core's output pulse
     input  wire          i_pulse_y,
     input  wire          i_pulse_neg,
@@ -29,20 +31,29 @@ module step_out #(
     output wire          o_step_y,
     output wire          o_dir_y,
     output reg           o_overrun,
-    output reg  [31:0]   o_ovr_count
+    output reg  [OW-1:0] o_ovr_count
 );
 
-  // Ready, a register so the command gate is one gate from flops: the
-  // channels were free, no pulse was on its way and no command went to
-  // the core in the clock before (a channel freed in that clock is seen
-  // one clock later: conservative, never optimistic).
+  // Ready, a register: the channels were free, no pulse was on its way
+  // and no command went to the core in the clock before (a channel freed
+  // in that clock is seen one clock later: conservative, never
+  // optimistic). The gated command o_cmd = i_cmd & ready_q is itself a
+  // register, formed a clock ahead from both terms' next values
+  // (i_cmd_next, ready_d), so the core's command, its latest input, comes
+  // straight from a flip-flop (issue 15: the gate's LUT and its routing
+  // were on the critical path of interp_top).
   wire rdy_x, rdy_y;
+  (* keep *) wire ready_d = rdy_x & rdy_y & ~i_pulse & ~o_cmd;  // kept: one LUT input
   reg ready_q;
   always @(posedge i_clk) begin
-    if (i_rst) ready_q <= 1'b0;
-    else ready_q <= rdy_x & rdy_y & ~i_pulse & ~o_cmd;
+    if (i_rst) begin
+      ready_q <= 1'b0;
+      o_cmd <= 1'b0;
+    end else begin
+      ready_q <= ready_d;
+      o_cmd <= i_cmd_next & ready_d;
+    end
   end
-  assign o_cmd = i_cmd & ready_q;
   wire overrun = i_cmd & ~ready_q & i_busy;
 
   // Each timing value <= 1 (0 acts as 1), for both channels.
@@ -72,15 +83,16 @@ module step_out #(
   end
 
   // Overrun count, saturating: ovr_sat_q is "the count is all ones", a
-  // register, so the 32-bit compare is not in the count's enable.
+  // register, so the OW-bit compare is not in the count's enable. OW = 16
+  // (issue 15: was 32; a diagnostic count, 16 bits save ~20 LCs).
   reg ovr_sat_q;
   always @(posedge i_clk) begin
     if (i_rst | i_clear) begin
-      o_ovr_count <= 32'd0;
+      o_ovr_count <= {OW{1'b0}};
       ovr_sat_q <= 1'b0;
     end else if (overrun & ~ovr_sat_q) begin
       o_ovr_count <= o_ovr_count + 1'b1;
-      ovr_sat_q <= (o_ovr_count == 32'hFFFF_FFFE);
+      ovr_sat_q <= (o_ovr_count == {{(OW-1){1'b1}}, 1'b0});
     end
   end
 

@@ -1,13 +1,15 @@
 // wb_regs: the register file of interp_top, a Wishbone B4 classic slave
 // (32-bit data, byte addresses of 32-bit words, whole-word writes: SEL is
 // not used). Every access is acknowledged in the clock after STB (one
-// wait state); reads are registered. Offsets and fields come from
-// interp_regs.vh, generated from regmap.def (docs/regmap.md).
+// wait state); reads are registered (DAT_O is valid with ACK only).
+// Offsets and fields come from interp_regs.vh, generated from regmap.def
+// (docs/regmap.md).
 `default_nettype none
 
 module wb_regs #(
     parameter integer W = 24,   // coordinate width
-    parameter integer QAW = 4   // log2 of the queue depth
+    parameter integer QAW = 4,  // log2 of the queue depth
+    parameter integer TW = 12   // step timing width (STEP_LEN .. DIR_HOLD bits)
 ) (
     input  wire          i_clk,
     input  wire          i_rst,
@@ -24,10 +26,10 @@ module wb_regs #(
     output reg           o_abort,   // one clock
     output reg           o_clear,   // one clock
     output reg  [31:0]   o_feed,
-    output reg  [15:0]   o_len,
-    output reg  [15:0]   o_space,
-    output reg  [15:0]   o_setup,
-    output reg  [15:0]   o_hold,
+    output reg  [TW-1:0] o_len,
+    output reg  [TW-1:0] o_space,
+    output reg  [TW-1:0] o_setup,
+    output reg  [TW-1:0] o_hold,
     // Staged block and push
     output reg           o_push,    // one clock, only when the queue is not full
     output wire [4*W+8:0] o_blk,    // the staged block: [BLK_BITS-1:0], interp_block.vh
@@ -36,7 +38,7 @@ module wb_regs #(
     input  wire          i_full,
     input  wire [QAW+1:0] i_level,
     input  wire          i_overrun,
-    input  wire [31:0]   i_ovr_count,
+    input  wire [15:0]   i_ovr_count,
     input  wire [31:0]   i_pos_x,
     input  wire [31:0]   i_pos_y,
     input  wire [31:0]   i_moves
@@ -78,10 +80,10 @@ module wb_regs #(
     if (i_rst) begin
       o_src <= R_CTRL[CTRL_SRC +: 2];
       o_feed <= R_FEED;
-      o_len <= R_STEP_LEN[15:0];
-      o_space <= R_STEP_SPACE[15:0];
-      o_setup <= R_DIR_SETUP[15:0];
-      o_hold <= R_DIR_HOLD[15:0];
+      o_len <= R_STEP_LEN[TW-1:0];
+      o_space <= R_STEP_SPACE[TW-1:0];
+      o_setup <= R_DIR_SETUP[TW-1:0];
+      o_hold <= R_DIR_HOLD[TW-1:0];
       mode_q <= R_BLK_MODE[8:0];
       xs_q <= R_BLK_XS[W-1:0];
       ys_q <= R_BLK_YS[W-1:0];
@@ -91,10 +93,10 @@ module wb_regs #(
       case (adr)
         A_CTRL: o_src <= i_wb_dat[CTRL_SRC +: 2];
         A_FEED: o_feed <= i_wb_dat;
-        A_STEP_LEN: o_len <= i_wb_dat[15:0];
-        A_STEP_SPACE: o_space <= i_wb_dat[15:0];
-        A_DIR_SETUP: o_setup <= i_wb_dat[15:0];
-        A_DIR_HOLD: o_hold <= i_wb_dat[15:0];
+        A_STEP_LEN: o_len <= i_wb_dat[TW-1:0];
+        A_STEP_SPACE: o_space <= i_wb_dat[TW-1:0];
+        A_DIR_SETUP: o_setup <= i_wb_dat[TW-1:0];
+        A_DIR_HOLD: o_hold <= i_wb_dat[TW-1:0];
         A_BLK_MODE: mode_q <= i_wb_dat[8:0];
         A_BLK_XS: xs_q <= i_wb_dat[W-1:0];
         A_BLK_YS: ys_q <= i_wb_dat[W-1:0];
@@ -124,42 +126,37 @@ module wb_regs #(
     else if (wr && adr == A_PUSH && i_full) reject_q <= 1'b1;
   end
 
-  // Read data.
-  always @(posedge i_clk) begin
-    if (acc & ~i_wb_we) begin
-      o_wb_dat <= 32'd0;
-      case (adr)
-        A_ID: o_wb_dat <= R_ID;
-        A_PARAMS: begin
-          o_wb_dat[PARAMS_W +: 8] <= W[7:0];
-          o_wb_dat[PARAMS_QDEPTH +: 8] <= QDEPTH[7:0];
-        end
-        A_CTRL: o_wb_dat[CTRL_SRC +: 2] <= o_src;
-        A_STATUS: begin
-          o_wb_dat[STATUS_BUSY] <= i_busy;
-          o_wb_dat[STATUS_EMPTY] <= (i_level == 0);
-          o_wb_dat[STATUS_FULL] <= i_full;
-          o_wb_dat[STATUS_OVERRUN] <= i_overrun;
-          o_wb_dat[STATUS_REJECT] <= reject_q;
-          o_wb_dat[STATUS_LEVEL +: QAW+2] <= i_level;
-        end
-        A_FEED: o_wb_dat <= o_feed;
-        A_STEP_LEN: o_wb_dat[15:0] <= o_len;
-        A_STEP_SPACE: o_wb_dat[15:0] <= o_space;
-        A_DIR_SETUP: o_wb_dat[15:0] <= o_setup;
-        A_DIR_HOLD: o_wb_dat[15:0] <= o_hold;
-        A_OVR_COUNT: o_wb_dat <= i_ovr_count;
-        A_POS_X: o_wb_dat <= i_pos_x;
-        A_POS_Y: o_wb_dat <= i_pos_y;
-        A_MOVES: o_wb_dat <= i_moves;
-        A_BLK_MODE: o_wb_dat[8:0] <= mode_q;
-        A_BLK_XS: o_wb_dat[W-1:0] <= xs_q;
-        A_BLK_YS: o_wb_dat[W-1:0] <= ys_q;
-        A_BLK_XE: o_wb_dat[W-1:0] <= xe_q;
-        A_BLK_YE: o_wb_dat[W-1:0] <= ye_q;
-        default: ;
-      endcase
-    end
+  // Read data. The configuration (FEED, the step timing) and the staged
+  // block are write only (regmap.def): only status, counters and CTRL.SRC
+  // reach the read multiplexer. The register loads the addressed word in
+  // every clock, whatever the access (Wishbone reads DAT_O only with ACK,
+  // the clock after the strobe): no enable and no clear from the strobe
+  // and the write enable, which made the address decode deeper (issue 15).
+  reg [31:0] rdata;
+  always @(*) begin
+    rdata = 32'd0;
+    case (adr)
+      A_ID: rdata = R_ID;
+      A_PARAMS: begin
+        rdata[PARAMS_W +: 8] = W[7:0];
+        rdata[PARAMS_QDEPTH +: 8] = QDEPTH[7:0];
+      end
+      A_CTRL: rdata[CTRL_SRC +: 2] = o_src;
+      A_STATUS: begin
+        rdata[STATUS_BUSY] = i_busy;
+        rdata[STATUS_EMPTY] = (i_level == 0);
+        rdata[STATUS_FULL] = i_full;
+        rdata[STATUS_OVERRUN] = i_overrun;
+        rdata[STATUS_REJECT] = reject_q;
+        rdata[STATUS_LEVEL +: QAW+2] = i_level;
+      end
+      A_OVR_COUNT: rdata[15:0] = i_ovr_count;
+      A_POS_X: rdata = i_pos_x;
+      A_POS_Y: rdata = i_pos_y;
+      A_MOVES: rdata = i_moves;
+      default: ;
+    endcase
   end
+  always @(posedge i_clk) o_wb_dat <= rdata;
 
 endmodule

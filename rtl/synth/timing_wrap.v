@@ -34,10 +34,13 @@ module timing_wrap (
 `elsif DESIGN_CORE
   localparam integer W = 24;
 `include "interp_block.vh"
-  // abort, push, the block from bit 2 (up to 10 + 4W), clear, cmd, 3 bits
-  // unused, the four 16-bit step timings from 16 + 4W, reset on top.
-  localparam integer NI = 16 + 4 * W + 64 + 1;
-  localparam integer NO = 49;
+  // abort, push, the block from bit 2 (up to 10 + 4W), clear, the command's
+  // next value, the command (the bit after it in the shift register: the
+  // same bit a clock later, as cmd_gen's o_cmd_next and o_cmd), 2 bits
+  // unused, the four TW-bit step timings from 16 + 4W, reset on top.
+  localparam integer TW = 12;  // step timing width, as interp_top's
+  localparam integer NI = 16 + 4 * W + 4 * TW + 1;
+  localparam integer NO = 33;
 `elsif DESIGN_TOP
   localparam integer W = 24;
   localparam integer NI = 45;  // Wishbone in, the pin, reset on top
@@ -108,17 +111,17 @@ module timing_wrap (
       .o_pulse(pulse), .o_pulse_y(pulse_y), .o_pulse_neg(pulse_neg), .o_pulse_last(outs[11]),
       .o_busy(busy), .o_xmag(), .o_xneg(), .o_ymag(), .o_yneg(), .o_d(), .o_q(), .o_k(), .o_arc()
   );
-  step_out #(.TW(16)) u_out (
+  step_out #(.TW(TW), .OW(16)) u_out (
       .i_clk(i_clk), .i_rst(rst), .i_clear(in_q[2 + BLK_BITS]),
-      .i_len(in_q[16 + 4 * W +: 16]), .i_space(in_q[32 + 4 * W +: 16]),
-      .i_setup(in_q[48 + 4 * W +: 16]), .i_hold(in_q[64 + 4 * W +: 16]),
-      .i_cmd(in_q[3 + BLK_BITS]), .i_busy(busy), .o_cmd(cmd_core),
+      .i_len(in_q[16 + 4 * W +: TW]), .i_space(in_q[16 + 4 * W + TW +: TW]),
+      .i_setup(in_q[16 + 4 * W + 2 * TW +: TW]), .i_hold(in_q[16 + 4 * W + 3 * TW +: TW]),
+      .i_cmd(in_q[4 + BLK_BITS]), .i_cmd_next(in_q[3 + BLK_BITS]), .i_busy(busy), .o_cmd(cmd_core),
       .i_pulse(pulse), .i_pulse_y(pulse_y), .i_pulse_neg(pulse_neg),
       .o_step_x(outs[0]), .o_dir_x(outs[1]), .o_step_y(outs[2]), .o_dir_y(outs[3]),
-      .o_overrun(outs[12]), .o_ovr_count(outs[44:13])
+      .o_overrun(outs[12]), .o_ovr_count(outs[28:13])
   );
-  assign outs[47:45] = {pulse, pulse_y, pulse_neg};
-  assign outs[48] = busy;
+  assign outs[31:29] = {pulse, pulse_y, pulse_neg};
+  assign outs[32] = busy;
 `elsif DESIGN_TOP
   interp_top #(.W(W), .QAW(4)) u_dut (
       .i_clk(i_clk), .i_rst(rst),

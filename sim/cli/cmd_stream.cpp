@@ -38,8 +38,8 @@ const char* kHelp =
     "  --steps-per-mm N  steps per mm on every axis (default 1000)\n"
     "  --accel A         acceleration limit of every axis, mm/min^2 (default 3528000 = 0.1 g)\n"
     "  --cycle MS        control cycle, ms (default 1)\n"
-    "  --step-len US     STEP high time, us (default 1)\n"
-    "  --step-space US   least STEP low time, us (default 1)\n"
+    "  --step-len US     STEP high time, us (default 1; at most 4095 board clocks)\n"
+    "  --step-space US   least STEP low time, us (default 1; at most 4095 board clocks)\n"
     "  --watchdog MS     board's hold after this long without a frame (default 50)\n"
     "  --timeout S       give up when the board has not answered for S seconds (default 3)\n"
     "  --quiet           no progress line\n"
@@ -199,6 +199,12 @@ int run_stream(const std::vector<std::string>& argv) {
   sc.cycle_s = pc.cycle_s;
   sc.step_len = static_cast<std::uint32_t>(positive(a, "step-len", "1") * sc.clock_hz / 1e6 + 0.5);
   sc.step_space = static_cast<std::uint32_t>(positive(a, "step-space", "1") * sc.clock_hz / 1e6 + 0.5);
+  // interp_top's timing registers are 12 bits (docs/regmap.md).
+  for (const auto& [name, clocks] : {std::pair<const char*, std::uint32_t>{"step-len", sc.step_len},
+                                     std::pair<const char*, std::uint32_t>{"step-space", sc.step_space}})
+    if (clocks > 4095)
+      throw UsageError(std::string("--") + name + ": " + std::to_string(clocks) +
+                       " clocks is more than the 4095 the board's timing registers hold");
   sc.wdog_clocks = static_cast<std::uint32_t>(positive(a, "watchdog", "50") * sc.clock_hz / 1e3);
   board::LinkTimes lt;
   lt.dead_s = positive(a, "timeout", "3");

@@ -136,15 +136,16 @@ TEST(Scoreboard, TheCoreMayNotLoseUpTo250kppsEvenIfFlagged) {
 }
 
 // The keep-up rule follows the programmed output stage: at STEP_LEN =
-// STEP_SPACE = 65535 clocks the core carries 50M / 131090 = 381 pps, so a
-// flagged loss at 1 kpps is FLAGGED, not FAIL; at 300 pps it must keep up.
+// STEP_SPACE = 4095 clocks (the registers' largest) the core carries
+// 50M / 8210 = 6090 pps, so a flagged loss at 20 kpps is FLAGGED, not
+// FAIL; at 5 kpps it must keep up.
 TEST(Scoreboard, TheCoreKeepsUpOnlyToWhatItsOutputStageCarries) {
   auto ps = pulses(kFig2);
   ps.resize(6);
-  const double carry = core_carry_rate(50e6, 65535, 65535, 10, 10);
-  EXPECT_NEAR(carry, 381.4, 0.1);
-  EXPECT_EQ(judge(fig2(), expect(fig2()), 1e3, commands(11), run_of("core", ps, 5), carry).verdict, Verdict::Flagged);
-  EXPECT_EQ(judge(fig2(), expect(fig2()), 300, commands(11), run_of("core", ps, 5), carry).verdict, Verdict::Fail);
+  const double carry = core_carry_rate(50e6, 4095, 4095, 10, 10);
+  EXPECT_NEAR(carry, 6090.1, 0.1);
+  EXPECT_EQ(judge(fig2(), expect(fig2()), 20e3, commands(11), run_of("core", ps, 5), carry).verdict, Verdict::Flagged);
+  EXPECT_EQ(judge(fig2(), expect(fig2()), 5e3, commands(11), run_of("core", ps, 5), carry).verdict, Verdict::Fail);
   EXPECT_EQ(keep_up_rate("core", kDefaultCoreCarry), 250e3);
 }
 
@@ -588,16 +589,17 @@ TEST(CosimRun, ReportLinksTheTraces) {
   std::filesystem::remove_all(o.report_dir);
 }
 
-// STEP_LEN = STEP_SPACE = 65535 clocks: the output stage carries 381 pps,
-// so at 1 kpps the core loses pulses, flags each one, and does not FAIL.
+// STEP_LEN = STEP_SPACE = 4095 clocks (the registers' largest): the output
+// stage carries 6090 pps, so at 20 kpps the core loses pulses, flags each
+// one, and does not FAIL.
 TEST(CosimRun, SlowOutputTimingIsNotAFalseFail) {
-  Options o = paper_at({1e3});
+  Options o = paper_at({20e3});
   o.engines = {"model", "core"};
-  o.timing.len = o.timing.space = 65535;
+  o.timing.len = o.timing.space = 4095;
   const auto rows = run_child(o);
   ASSERT_EQ(rows.size(), 4u);
   for (const char* c : {"fig2", "fig5"}) {
-    const ChildRow* r = find(rows, c, "core", 1e3);
+    const ChildRow* r = find(rows, c, "core", 20e3);
     ASSERT_TRUE(r);
     EXPECT_EQ(r->verdict, "FLAGGED") << c << ": " << r->summary;
     EXPECT_GT(r->lost, 0u);

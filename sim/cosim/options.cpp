@@ -29,7 +29,8 @@ std::vector<std::string> split(const std::string& s, const std::string& what) {
   }
 }
 
-// Clocks of the core (1..65535), or a duration with its unit ("2us",
+// Clocks of the core (1..4095: the 12-bit timing registers of
+// docs/regmap.md), or a duration with its unit ("2us",
 // "1500ns") that must be a whole number of clocks at `core_hz`.
 std::uint32_t parse_clocks(const std::string& text, const std::string& what, double core_hz) {
   std::int64_t v = 0;
@@ -44,8 +45,8 @@ std::uint32_t parse_clocks(const std::string& text, const std::string& what, dou
   } else if (cli::read_int(text, v) != cli::IntRead::Ok) {
     v = -1;
   }
-  if (v < 1 || v > 65535)
-    throw UsageError(what + " '" + text + "': expected clocks 1..65535 or a duration (2us, 1500ns) of 1..65535 clocks");
+  if (v < 1 || v > 4095)
+    throw UsageError(what + " '" + text + "': expected clocks 1..4095 or a duration (2us, 1500ns) of 1..4095 clocks");
   return static_cast<std::uint32_t>(v);
 }
 

@@ -240,24 +240,22 @@ TEST(InterpTop, RegistersReadAndWrite) {
   EXPECT_EQ((params & INTERP_PARAMS_QDEPTH_MASK) >> INTERP_PARAMS_QDEPTH_LSB, 18u);
   // Reset values: queue empty, nothing running.
   EXPECT_EQ(status(h), std::uint32_t(INTERP_STATUS_EMPTY_MASK));
-  EXPECT_EQ(h.read(INTERP_REG_STEP_LEN), 1u);
   EXPECT_EQ(h.read(INTERP_REG_POS_X), 0u);
-  // Read back what was written, cut to each register's width.
-  const std::pair<std::uint32_t, std::uint32_t> rw[] = {
-      {INTERP_REG_FEED, 0xFFFFFFFFu},       {INTERP_REG_STEP_LEN, 0xFFFFu},
-      {INTERP_REG_STEP_SPACE, 0xFFFFu},     {INTERP_REG_DIR_SETUP, 0xFFFFu},
-      {INTERP_REG_DIR_HOLD, 0xFFFFu},       {INTERP_REG_BLK_MODE, 0x1FFu},
-      {INTERP_REG_BLK_XS, 0xFFFFFFu},       {INTERP_REG_BLK_YS, 0xFFFFFFu},
-      {INTERP_REG_BLK_XE, 0xFFFFFFu},       {INTERP_REG_BLK_YE, 0xFFFFFFu},
-      {INTERP_REG_CTRL, INTERP_CTRL_SRC_MASK}};
-  for (const auto& [adr, mask] : rw) {
-    for (std::uint32_t v : {0xFFFFFFFFu, 0x12345678u, 0u, 0xA5A5A5A5u}) {
-      // CTRL: only the SRC field (ABORT and CLEAR are strobes).
-      const std::uint32_t wv = adr == INTERP_REG_CTRL ? v & INTERP_CTRL_SRC_MASK : v;
-      h.write(adr, wv);
-      const std::uint32_t want = wv & mask;
-      EXPECT_EQ(h.read(adr), want) << "register 0x" << std::hex << adr;
-    }
+  // CTRL.SRC reads back what was written (ABORT and CLEAR are strobes).
+  for (std::uint32_t v : {0xFFFFFFFFu, 0x12345678u, 0u, 0xA5A5A5A5u}) {
+    h.write(INTERP_REG_CTRL, v & INTERP_CTRL_SRC_MASK);
+    EXPECT_EQ(h.read(INTERP_REG_CTRL), v & INTERP_CTRL_SRC_MASK);
+  }
+  h.write(INTERP_REG_CTRL, 0);
+  // The configuration and the staged block are write only: they read 0
+  // whatever was written (what a write does is checked by the moves, the
+  // timing monitor and the feed rates of the tests below).
+  for (std::uint32_t adr : {INTERP_REG_FEED, INTERP_REG_STEP_LEN, INTERP_REG_STEP_SPACE, INTERP_REG_DIR_SETUP,
+                            INTERP_REG_DIR_HOLD, INTERP_REG_BLK_MODE, INTERP_REG_BLK_XS, INTERP_REG_BLK_YS,
+                            INTERP_REG_BLK_XE, INTERP_REG_BLK_YE, INTERP_REG_PUSH}) {
+    EXPECT_EQ(h.read(adr), 0u) << "register 0x" << std::hex << adr << " after reset";
+    if (adr != INTERP_REG_PUSH) h.write(adr, 0xFFFFFFFFu);
+    EXPECT_EQ(h.read(adr), 0u) << "register 0x" << std::hex << adr;
   }
   // Read-only registers ignore writes.
   h.write(INTERP_REG_ID, 0);
@@ -348,6 +346,28 @@ TEST(InterpTop, OverrunFlagAndCounterUnderTooFastCommands) {
   EXPECT_EQ(h.read(INTERP_REG_OVR_COUNT), 0u);
 }
 
+// OVR_COUNT counts up to 2^16 - 1 and stays there: commands every clock
+// against the slowest steps (4095 clocks high, 4095 low: the 12-bit timing
+// registers' largest), well past the count's end.
+TEST(InterpTop, OverrunCountSaturates) {
+  TopHarness h;
+  h.set_timing({4095, 4095, 1, 1});
+  h.push(Move::line(50, 0));
+  h.write(INTERP_REG_CTRL, 3 << INTERP_CTRL_SRC_LSB);
+  for (int i = 0; i < 40000; ++i) h.tick();
+  const std::uint32_t part = h.read(INTERP_REG_OVR_COUNT);
+  EXPECT_GT(part, 30000u);
+  EXPECT_LT(part, 65535u);
+  for (int i = 0; i < 60000; ++i) h.tick();
+  EXPECT_EQ(h.read(INTERP_REG_OVR_COUNT), 65535u);
+  for (int i = 0; i < 100; ++i) h.tick();
+  EXPECT_EQ(h.read(INTERP_REG_OVR_COUNT), 65535u);
+  h.write(INTERP_REG_CTRL, 0);
+  h.write(INTERP_REG_CTRL, INTERP_CTRL_CLEAR_MASK);
+  EXPECT_EQ(h.read(INTERP_REG_OVR_COUNT), 0u);
+  EXPECT_TRUE(h.errors.empty()) << h.error_text();
+}
+
 // Long DIR setup and hold against short steps, commands every clock, many
 // direction reversals (small full circles): DIR timing is what binds.
 TEST(InterpTop, DirSetupAndHoldBindUnderFastCommands) {
@@ -382,6 +402,33 @@ TEST(InterpTop, FeedIsWritableWhileRunning) {
   EXPECT_TRUE(h.errors.empty()) << h.error_text();
 }
 
+// The feed generator's command count over n clocks is n * FEED / 2^32 (the
+// phase accumulator's carries; its low half's carry reaches the output a
+// step late: +-1; the CTRL writes around the run: a few clocks), for
+// increments whose low 16 bits matter. Every command
+// is a core pulse or an overrun (the move is running throughout).
+TEST(InterpTop, FeedGeneratorCountsEveryCarry) {
+  const std::pair<std::uint32_t, std::uint64_t> cases[] = {
+      {0x0001FFFFu, 1u << 20}, {0x00012345u, 1u << 20}, {0x7FFFFFFFu, 100000}, {0xFFFFFFFFu, 60000}};
+  for (const auto& [feed, n] : cases) {
+    TopHarness h;
+    h.set_timing({1, 1, 1, 1});
+    h.push(Move::line(1000000, 0));
+    h.write(INTERP_REG_CTRL, 1 << INTERP_CTRL_SRC_LSB);  // the pin: no command yet
+    for (int i = 0; i < 20 && !h.top().o_busy; ++i) h.tick();
+    ASSERT_TRUE(h.top().o_busy);
+    h.write(INTERP_REG_FEED, feed);
+    const std::uint64_t p0 = h.core_pulses;
+    h.write(INTERP_REG_CTRL, 2 << INTERP_CTRL_SRC_LSB);
+    for (std::uint64_t i = 0; i < n; ++i) h.tick();
+    h.write(INTERP_REG_CTRL, 0);
+    const double commands = double(h.core_pulses - p0) + double(h.read(INTERP_REG_OVR_COUNT));
+    const double want = double(n) * double(feed) / 4294967296.0;
+    EXPECT_NEAR(commands, want, 3.0) << "FEED 0x" << std::hex << feed;  // + the clocks of the CTRL writes
+    EXPECT_TRUE(h.errors.empty()) << h.error_text();
+  }
+}
+
 // The command pin: one pulse per rising edge, however long it stays high.
 TEST(InterpTop, CommandPinOnePulsePerRisingEdge) {
   TopHarness h;
@@ -399,6 +446,35 @@ TEST(InterpTop, CommandPinOnePulsePerRisingEdge) {
   const auto want = model_pulses({Move::line(7, -3)});
   for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(h.pin_pulses()[i], want[i]);
   EXPECT_TRUE(h.errors.empty()) << h.error_text();
+}
+
+// Every command pulse that comes while a move runs either makes exactly one
+// core pulse or is refused and counted, never both and never neither: two
+// pin edges k clocks apart, for every k across a step's output time, so
+// the second one meets the output stage in each of its states (the clock
+// a channel frees, the clock after a command was passed, ...).
+TEST(InterpTop, EveryCommandIsAPulseOrAnOverrun) {
+  for (int k = 1; k <= 24; ++k) {
+    TopHarness h;
+    h.set_timing({4, 3, 2, 2});
+    h.push(Move::line(40, 0));
+    h.write(INTERP_REG_CTRL, 1 << INTERP_CTRL_SRC_LSB);
+    for (int i = 0; i < 20 && !h.top().o_busy; ++i) h.tick();
+    ASSERT_TRUE(h.top().o_busy);
+    const std::uint64_t p0 = h.core_pulses;
+    for (int e = 0; e < 2; ++e) {
+      h.top().i_cmd_pin = 1;
+      for (int i = 0; i < (e == 0 ? k : 3); ++i) h.tick();
+      h.top().i_cmd_pin = 0;
+      for (int i = 0; i < (e == 0 ? 1 : 30); ++i) h.tick();
+    }
+    const std::uint64_t pulses = h.core_pulses - p0;
+    const std::uint32_t ovr = h.read(INTERP_REG_OVR_COUNT);
+    EXPECT_GE(pulses, 1u) << "k = " << k;
+    EXPECT_EQ(pulses + ovr, 2u) << "k = " << k << ": " << pulses << " pulses, " << ovr << " refused";
+    EXPECT_EQ(bool(status(h) & INTERP_STATUS_OVERRUN_MASK), ovr != 0) << "k = " << k;
+    EXPECT_TRUE(h.errors.empty()) << h.error_text();
+  }
 }
 
 // Reset in the middle of a move through the bus: abort, then a new move
