@@ -14,9 +14,12 @@
 #if VERILATOR_VERSION_INTEGER == 5006000
 // The model's rising-edge region (one_eval_clock.hpp): the input region
 // (the mailbox's write port follows the host's pins) then the NBA region,
-// each under its one trigger, as the model's eval() runs them.
+// each under its one trigger, as the model's eval() runs them; of the NBA
+// region its one function, the clocked blocks, called directly (no trigger
+// set and tested, no trace activity flag: this path writes no waveform; a
+// model whose NBA region had another function would not link).
 void Vboard8085___024root___eval_ico(Vboard8085___024root* vlSelf);
-void Vboard8085___024root___eval_nba(Vboard8085___024root* vlSelf);
+void Vboard8085___024root___nba_sequent__TOP__0(Vboard8085___024root* vlSelf);
 #endif
 
 namespace board8085 {
@@ -27,8 +30,7 @@ namespace {
 void posedge(Vboard8085___024root* r) {
   r->__VicoTriggered.at(0) = true;
   Vboard8085___024root___eval_ico(r);
-  r->__VnbaTriggered.at(0) = true;
-  Vboard8085___024root___eval_nba(r);
+  Vboard8085___024root___nba_sequent__TOP__0(r);
 }
 constexpr cpu8085::OneEvalClock<Vboard8085>::Posedge kPosedge = &posedge;
 #else

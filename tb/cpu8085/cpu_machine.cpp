@@ -10,10 +10,14 @@
 #include "one_eval_clock.hpp"
 
 #if VERILATOR_VERSION_INTEGER == 5006000
-// The model's rising-edge region (one_eval_clock.hpp): the NBA region
+// The model's rising-edge region (one_eval_clock.hpp): the NBA region's one
+// function, the clocked blocks, which the NBA region (_eval_nba) runs
 // under its one trigger, the rising edge of i_clk (the model has no input
-// region: no logic follows a pin).
-void Vcpu8085___024root___eval_nba(Vcpu8085___024root* vlSelf);
+// region: no logic follows a pin). Called directly: no trigger set and
+// tested, no trace activity flag (this path writes no waveform). A model
+// whose NBA region had another function would not link (the name changes)
+// or fail OneEvalClock.SameUnitsAsTwoEvals.
+void Vcpu8085___024root___nba_sequent__TOP__0(Vcpu8085___024root* vlSelf);
 #endif
 
 namespace cpu8085 {
@@ -21,11 +25,7 @@ namespace cpu8085 {
 namespace {
 
 #if VERILATOR_VERSION_INTEGER == 5006000
-void posedge(Vcpu8085___024root* r) {
-  r->__VnbaTriggered.at(0) = true;
-  Vcpu8085___024root___eval_nba(r);
-}
-constexpr OneEvalClock<Vcpu8085>::Posedge kPosedge = &posedge;
+constexpr OneEvalClock<Vcpu8085>::Posedge kPosedge = &Vcpu8085___024root___nba_sequent__TOP__0;
 #else
 constexpr OneEvalClock<Vcpu8085>::Posedge kPosedge = nullptr;
 #endif

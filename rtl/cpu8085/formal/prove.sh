@@ -127,7 +127,7 @@ mutants=(
   "cpu8085.v|LXI ends after its first operand byte|s/if (is_mem_rmw | is_lxi | is_dad | is_pop_ret/if (is_mem_rmw | is_dad | is_pop_ret/"
   "cpu8085.v|Jcc not taken reads the high address byte too|s/if (is_jcc) seq_last = at_2 || !cond_ir(ddd);/if (is_jcc) seq_last = at_2;/"
   "cpu8085.v|XTHL runs one cycle too many|s/if (is_xthl) seq_last = at_4;/if (is_xthl) seq_last = (mc == 3'd5);/"
-  "cpu8085.v|write strobe also in memory reads|s/o_wr <= (cyc_q == CY_MW/o_wr <= (cyc_q == CY_MR || cyc_q == CY_MW/"
+  "cpu8085.v|write strobe also in memory reads|s/o_wr <= (o_cycle == CY_MW/o_wr <= (o_cycle == CY_MR || o_cycle == CY_MW/"
 )
 if [ "$what" = all ] || [ "$what" = mutants ]; then
   n=0
