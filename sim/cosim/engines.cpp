@@ -34,37 +34,32 @@ void align(const sc_time& period) {
 Pulse step_pulse(Axis a, bool dir_negative) { return Pulse{a, static_cast<std::int8_t>(dir_negative ? -1 : +1)}; }
 
 // The move the program works on (or finished last) and its position, from
-// the mailbox: the slot MB_ACTIVE names, else (idle) the latest queued slot
-// whose slot says done. Nothing when no move has started. The first is the
-// move's index (queued_move maps a queued slot, a move or one of a long
-// line's segments, to its move); the state is in the whole move's terms.
+// the mailbox: the slot MB_ACTIVE names, else (idle) the latest write whose
+// slot says done. Nothing when no move has started. The first is the move's
+// index (a long line's segments map to their line); the state is in the
+// whole move's terms.
 std::optional<std::pair<std::size_t, State>> current_move(std::span<const std::uint8_t, 256> mb,
-                                                          const sw8085::Codes& codes,
-                                                          const std::vector<std::unique_ptr<sw8085::SlotMove>>& queued,
-                                                          const std::vector<std::size_t>& queued_move,
-                                                          const std::array<int, 2>& slot_move) {
+                                                          const sw8085::Codes& codes, const SlotLog& log) {
   const std::uint8_t active = mb[sw8085::kActive];
   int pick = -1;
-  for (int i = 0; i < 2; ++i)
-    if (slot_move[i] >= 0 && queued[slot_move[i]]->base == active) pick = slot_move[i];
+  for (int w : log.in_slot)
+    if (w >= 0 && log.writes[w].base == active) pick = w;
   if (pick < 0)
-    for (int i = 0; i < 2; ++i)
-      if (slot_move[i] >= 0 && codes.is_done(mb[queued[slot_move[i]]->base])) pick = std::max(pick, slot_move[i]);
+    for (int w : log.in_slot)
+      if (w >= 0 && codes.is_done(mb[log.writes[w].base])) pick = std::max(pick, w);
   if (pick < 0) return std::nullopt;
-  return std::make_pair(queued_move[pick], sw8085::decode(*queued[pick], mb, codes, 0));
+  return std::make_pair(log.move_of[pick], sw8085::decode(log.writes[pick], mb, codes, 0));
 }
 
 // The engine's position at the end of a case (absolute, on the case's
 // path), from the mailbox; a mailbox that does not decode is an error of the
 // run, and the position is then unknown.
 void read_final_position(std::span<const std::uint8_t, 256> mb, const sw8085::Codes& codes,
-                         const std::vector<std::unique_ptr<sw8085::SlotMove>>& queued,
-                         const std::vector<std::size_t>& queued_move, const std::array<int, 2>& slot_move,
-                         const std::vector<Placed>& moves, EngineRun& run) {
+                         const SlotLog& log, const std::vector<Placed>& moves, EngineRun& run) {
   run.position_known = true;
   run.x = run.y = 0;
   try {
-    if (const auto cur = current_move(mb, codes, queued, queued_move, slot_move)) {
+    if (const auto cur = current_move(mb, codes, log)) {
       run.x = moves[cur->first].origin_x + cur->second.x;
       run.y = moves[cur->first].origin_y + cur->second.y;
     }
@@ -445,10 +440,7 @@ IssCosimEngine::~IssCosimEngine() = default;
 void IssCosimEngine::begin_case(const Case& c) {
   moves_ = place(c.moves);
   next_move_ = 0;
-  next_slot_ = 0;
-  queued_.clear();
-  queued_move_.clear();
-  slot_move_ = {-1, -1};
+  slots_.clear();
   pulses_ = 0;
   waited_ = 0;
   per_move_.clear();
@@ -461,21 +453,14 @@ void IssCosimEngine::begin_case(const Case& c) {
   started_.notify(SC_ZERO_TIME);
 }
 
-void IssCosimEngine::push_queued(const sw8085::SlotMove& sm, std::size_t move) {
-  queued_.push_back(std::make_unique<sw8085::SlotMove>(sm));
-  queued_move_.push_back(move);
-  slot_move_[next_slot_] = static_cast<int>(queued_.size() - 1);
-  next_slot_ ^= 1;
-}
-
 // Fills free slots: first the waiting segments of the last move queued (a
 // line of more than 65536 P steps, sw8085::Host::pump), then new moves.
 void IssCosimEngine::feed() {
-  for (const auto& sm : host_->pump()) push_queued(sm, next_move_ - 1);
+  for (const auto& sm : host_->pump()) slots_.push(sm, next_move_ - 1);
   while (next_move_ < moves_.size() && host_->can_queue()) {
-    push_queued(host_->queue(moves_[next_move_].move), next_move_);
+    slots_.push(host_->queue(moves_[next_move_].move), next_move_);
     ++next_move_;
-    for (const auto& sm : host_->pump()) push_queued(sm, next_move_ - 1);
+    for (const auto& sm : host_->pump()) slots_.push(sm, next_move_ - 1);
   }
   // Both mailbox slots busy with a move waiting: the program's queue is full.
   if (next_move_ < moves_.size() && waited_ < next_move_ + 1) ++events_["queue_full"], waited_ = next_move_ + 1;
@@ -497,7 +482,7 @@ void IssCosimEngine::collect() {
     ++pulses_;
     std::string state;
     try {
-      if (auto cur = current_move(mailbox(), host_->codes(), queued_, queued_move_, slot_move_)) {
+      if (auto cur = current_move(mailbox(), host_->codes(), slots_)) {
         // The pulse belongs to this move: count it there.
         if (per_move_.size() < moves_.size()) per_move_.resize(moves_.size(), 0);
         cur->second.pulses = ++per_move_[cur->first];
@@ -558,7 +543,7 @@ void IssCosimEngine::end_case(EngineRun& run) {
   run.error = error_;
   run.overruns_known = true;
   run.overruns = host_->overruns();
-  read_final_position(mailbox(), host_->codes(), queued_, queued_move_, slot_move_, moves_, run);
+  read_final_position(mailbox(), host_->codes(), slots_, moves_, run);
 }
 
 // --- cpu: board8085 --------------------------------------------------------------
@@ -653,7 +638,7 @@ std::uint8_t BoardCosimEngine::peek(std::uint8_t addr) {
 
 bool BoardCosimEngine::slot_free(int i) {
   // A finished slot is free once the program has left it (sw8085 host rule).
-  if (slot_move_[i] < 0) return true;
+  if (slots_.in_slot[i] < 0) return true;
   const std::uint8_t base = sw8085::kSlots[i];
   const std::uint8_t mode = peek(base);
   if (!codes_->is_done(mode)) return false;
@@ -661,7 +646,7 @@ bool BoardCosimEngine::slot_free(int i) {
 }
 
 void BoardCosimEngine::queue_next() {
-  const std::uint8_t base = sw8085::kSlots[next_slot_];
+  const std::uint8_t base = sw8085::kSlots[slots_.next_slot];
   std::array<std::uint8_t, 256> img{};
   auto sm = sw8085::encode_segment(moves_[next_move_].move, next_segment_, base, *codes_,
                                    std::span<std::uint8_t, 256>(img));
@@ -671,10 +656,7 @@ void BoardCosimEngine::queue_next() {
       throw std::logic_error("cpu: sw8085::encode wrote outside its slot at " + std::to_string(a));
   for (int a = lo; a < hi; ++a) poke(static_cast<std::uint8_t>(a), img[a]);
   poke(static_cast<std::uint8_t>(hi), sw8085::kQueued);
-  queued_.push_back(std::make_unique<sw8085::SlotMove>(sm));
-  queued_move_.push_back(next_move_);
-  slot_move_[next_slot_] = static_cast<int>(queued_.size() - 1);
-  next_slot_ ^= 1;
+  slots_.push(sm, next_move_);
   if (++next_segment_ == sm.segments) next_segment_ = 0, ++next_move_;  // a long line's next segment, else the next move
 }
 
@@ -689,7 +671,7 @@ void BoardCosimEngine::host_thread() {
         for (int n = 0; peek(sw8085::kReady) != sw8085::kReadyMagic; ++n)
           if (n > 50000) throw std::runtime_error("the program did not become ready");
         if (peek(sw8085::kLayout) != sw8085::kLayoutVersion) throw std::runtime_error("mailbox layout version mismatch");
-        while (next_move_ < moves_.size() && slot_free(next_slot_)) queue_next();
+        while (next_move_ < moves_.size() && slot_free(slots_.next_slot)) queue_next();
       } catch (const std::exception& e) {
         error_ = e.what();
       }
@@ -704,7 +686,7 @@ void BoardCosimEngine::host_thread() {
       request_ = Request::None;
       reply_.notify(SC_ZERO_TIME);
     } else if (active_ && error_.empty() && next_move_ < moves_.size()) {
-      if (slot_free(next_slot_)) queue_next();
+      if (slot_free(slots_.next_slot)) queue_next();
       else if (waited_ < next_move_ + 1) ++events_["queue_full"], waited_ = next_move_ + 1;  // both slots busy
     } else {
       sc_core::wait(request_ev_);
@@ -716,10 +698,7 @@ void BoardCosimEngine::begin_case(const Case& c) {
   moves_ = place(c.moves);
   next_move_ = 0;
   next_segment_ = 0;
-  next_slot_ = 0;
-  queued_.clear();
-  queued_move_.clear();
-  slot_move_ = {-1, -1};
+  slots_.clear();
   waited_ = 0;
   error_.clear();
   request_ = Request::Begin;
@@ -736,7 +715,7 @@ void BoardCosimEngine::end_case(EngineRun& run) {
   const auto& mb = final_mailbox_;
   run.overruns_known = true;
   run.overruns = mb[sw8085::kOverruns] | mb[sw8085::kOverruns + 1] << 8 | mb[sw8085::kOverruns + 2] << 16;
-  read_final_position(std::span<const std::uint8_t, 256>(mb), *codes_, queued_, queued_move_, slot_move_, moves_, run);
+  read_final_position(std::span<const std::uint8_t, 256>(mb), *codes_, slots_, moves_, run);
 }
 
 }  // namespace contour::cosim

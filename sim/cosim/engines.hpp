@@ -30,6 +30,7 @@
 
 #include "cases.hpp"
 #include "scoreboard.hpp"
+#include "sw8085/interp/mailbox.hpp"
 
 class Vcosim_interp;
 class Vcosim_board;
@@ -37,8 +38,6 @@ class VerilatedFstSc;
 
 namespace contour::sw8085 {
 class Host;
-struct SlotMove;
-struct Codes;
 }  // namespace contour::sw8085
 
 namespace contour::cosim {
@@ -220,6 +219,24 @@ class CoreCosimEngine final : public VerilatedCosimEngine {
   std::string error_;
 };
 
+// What the host of the 8085 engines wrote into the program's two mailbox
+// slots: every write in order (a move, or one segment of a line of more
+// than 65536 P steps), the move each belongs to, and the write each slot
+// holds now.
+struct SlotLog {
+  std::vector<sw8085::SlotMove> writes;
+  std::vector<std::size_t> move_of;  // index into the case's moves, per write
+  std::array<int, 2> in_slot{-1, -1};  // index into writes, per slot; -1: never written
+  int next_slot = 0;                   // the slot the next write goes to
+  void clear() { *this = SlotLog{}; }
+  void push(const sw8085::SlotMove& sm, std::size_t move) {
+    writes.push_back(sm);
+    move_of.push_back(move);
+    in_slot[next_slot] = static_cast<int>(writes.size() - 1);
+    next_slot ^= 1;
+  }
+};
+
 // --- iss: the program on the C++ ISS ----------------------------------------
 
 class IssCosimEngine final : public CosimEngine {
@@ -241,13 +258,9 @@ class IssCosimEngine final : public CosimEngine {
   std::unique_ptr<sw8085::Host> host_;
   std::vector<Placed> moves_;
   std::size_t next_move_ = 0;
-  int next_slot_ = 0;
-  std::vector<std::unique_ptr<sw8085::SlotMove>> queued_;  // in queue order: moves and segments
-  std::vector<std::size_t> queued_move_;                   // the index into moves_ of each of queued_
-  std::array<int, 2> slot_move_{-1, -1};                   // index into queued_ per slot
+  SlotLog slots_;
   std::uint64_t pulses_ = 0;
   std::vector<std::uint64_t> per_move_;  // output pulses of each move (all its segments)
-  void push_queued(const sw8085::SlotMove& sm, std::size_t move);
   std::size_t waited_ = 0;               // moves that waited for a free slot (coverage)
   bool edge_ = false;
   bool active_ = false, parked_ = true;
@@ -290,10 +303,7 @@ class BoardCosimEngine final : public VerilatedCosimEngine {
   std::vector<Placed> moves_;
   std::size_t next_move_ = 0;
   int next_segment_ = 0;  // of moves_[next_move_]: a long line runs as segments (sw8085::segments)
-  int next_slot_ = 0;
-  std::vector<std::unique_ptr<sw8085::SlotMove>> queued_;  // in queue order: moves and segments
-  std::vector<std::size_t> queued_move_;                   // the index into moves_ of each of queued_
-  std::array<int, 2> slot_move_{-1, -1};
+  SlotLog slots_;
   std::size_t waited_ = 0;  // moves that waited for a free slot (coverage)
   // Every host port access happens in host_thread; the controller asks.
   enum class Request { None, Begin, End };
