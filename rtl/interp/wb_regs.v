@@ -1,7 +1,9 @@
 // wb_regs: the register file of interp_top, a Wishbone B4 classic slave
 // (32-bit data, byte addresses of 32-bit words, whole-word writes: SEL is
-// not used). Every access is acknowledged in the clock after STB (one
-// wait state); reads are registered (DAT_O is valid with ACK only).
+// not used). Every access is acknowledged two clocks after STB (two wait
+// states: the address decode, then the write or the read multiplexer, each
+// ends in a register); DAT_O is valid with ACK only. A master must hold
+// its signals until ACK (B4 classic) and wait for ACK, not count clocks.
 // Offsets and fields come from interp_regs.vh, generated from regmap.def
 // (docs/regmap.md).
 `default_nettype none
@@ -49,10 +51,52 @@ module wb_regs #(
 
   localparam integer QDEPTH = (1 << QAW) + 2;  // memory, its output, the datapath
 
-  wire acc = i_wb_cyc & i_wb_stb & ~o_wb_ack;
-  wire wr = acc & i_wb_we;
+  // The bus in two clocks, each ending in registers:
+  //   clock 0 (STB, idle): the address is registered (adr_q), and decoded
+  //     into one-hot read selects, registered too (rsel_q), in every clock
+  //     whatever the access; st1_q (and wr1_q for a write) marks the access;
+  //   clock 1 (st1_q): a write lands, its word decoded from adr_q (DAT_I
+  //     is still held: a Wishbone B4 classic master holds its signals
+  //     until ACK), the strobes are registered; DAT_O loads the word
+  //     rsel_q selects;
+  //   clock 2: ACK, with DAT_O.
+  // So ACK comes two clocks after the strobe (two wait states), never two
+  // in a row; no clock has the address decode and the read multiplexer
+  // both (issue 15: the Wishbone read was top's critical path).
+  reg st1_q, wr1_q;
+  wire acc = i_wb_cyc & i_wb_stb & ~st1_q & ~o_wb_ack;
   wire [7:0] adr = {i_wb_adr[7:2], 2'b00};
   wire [1:0] unused_adr = i_wb_adr[1:0];
+  reg [7:2] adr_q;
+  wire [7:0] wadr = {adr_q, 2'b00};
+  always @(posedge i_clk) begin
+    if (i_rst) begin
+      st1_q <= 1'b0;
+      wr1_q <= 1'b0;
+      o_wb_ack <= 1'b0;
+    end else begin
+      st1_q <= acc;
+      wr1_q <= acc & i_wb_we;
+      o_wb_ack <= st1_q;
+    end
+  end
+  always @(posedge i_clk) adr_q <= adr[7:2];
+
+  // The read selects, one a readable word, registered.
+  localparam integer S_ID = 0, S_PARAMS = 1, S_CTRL = 2, S_STATUS = 3, S_OVR = 4, S_POS_X = 5,
+      S_POS_Y = 6, S_MOVES = 7, NRS = 8;
+  reg [NRS-1:0] rsel_q;
+  always @(posedge i_clk)
+    rsel_q <= {adr == A_MOVES, adr == A_POS_Y, adr == A_POS_X, adr == A_OVR_COUNT,
+               adr == A_STATUS, adr == A_CTRL, adr == A_PARAMS, adr == A_ID};
+
+  // The write enables of clock 1, one a writable word (one-hot or zero).
+  localparam integer S_FEED = 0, S_LEN = 1, S_SPACE = 2, S_SETUP = 3, S_HOLD = 4, S_MODE = 5,
+      S_XS = 6, S_YS = 7, S_XE = 8, S_YE = 9, S_PUSH = 10, S_WCTRL = 11, NWS = 12;
+  wire [NWS-1:0] wsel = {NWS{wr1_q}} &
+      {wadr == A_CTRL, wadr == A_PUSH, wadr == A_BLK_YE, wadr == A_BLK_XE,
+       wadr == A_BLK_YS, wadr == A_BLK_XS, wadr == A_BLK_MODE, wadr == A_DIR_HOLD,
+       wadr == A_DIR_SETUP, wadr == A_STEP_SPACE, wadr == A_STEP_LEN, wadr == A_FEED};
 
   reg [8:0] mode_q;
   reg [W-1:0] xs_q, ys_q, xe_q, ye_q;
@@ -69,12 +113,6 @@ module wb_regs #(
   assign o_blk[BLK_XE +: W] = xe_q;
   assign o_blk[BLK_YE +: W] = ye_q;
 
-  // Acknowledge: one clock after the strobe, never two in a row.
-  always @(posedge i_clk) begin
-    if (i_rst) o_wb_ack <= 1'b0;
-    else o_wb_ack <= acc;
-  end
-
   // Writable registers.
   always @(posedge i_clk) begin
     if (i_rst) begin
@@ -89,21 +127,18 @@ module wb_regs #(
       ys_q <= R_BLK_YS[W-1:0];
       xe_q <= R_BLK_XE[W-1:0];
       ye_q <= R_BLK_YE[W-1:0];
-    end else if (wr) begin
-      case (adr)
-        A_CTRL: o_src <= i_wb_dat[CTRL_SRC +: 2];
-        A_FEED: o_feed <= i_wb_dat;
-        A_STEP_LEN: o_len <= i_wb_dat[TW-1:0];
-        A_STEP_SPACE: o_space <= i_wb_dat[TW-1:0];
-        A_DIR_SETUP: o_setup <= i_wb_dat[TW-1:0];
-        A_DIR_HOLD: o_hold <= i_wb_dat[TW-1:0];
-        A_BLK_MODE: mode_q <= i_wb_dat[8:0];
-        A_BLK_XS: xs_q <= i_wb_dat[W-1:0];
-        A_BLK_YS: ys_q <= i_wb_dat[W-1:0];
-        A_BLK_XE: xe_q <= i_wb_dat[W-1:0];
-        A_BLK_YE: ye_q <= i_wb_dat[W-1:0];
-        default: ;
-      endcase
+    end else begin
+      if (wsel[S_WCTRL]) o_src <= i_wb_dat[CTRL_SRC +: 2];
+      if (wsel[S_FEED]) o_feed <= i_wb_dat;
+      if (wsel[S_LEN]) o_len <= i_wb_dat[TW-1:0];
+      if (wsel[S_SPACE]) o_space <= i_wb_dat[TW-1:0];
+      if (wsel[S_SETUP]) o_setup <= i_wb_dat[TW-1:0];
+      if (wsel[S_HOLD]) o_hold <= i_wb_dat[TW-1:0];
+      if (wsel[S_MODE]) mode_q <= i_wb_dat[8:0];
+      if (wsel[S_XS]) xs_q <= i_wb_dat[W-1:0];
+      if (wsel[S_YS]) ys_q <= i_wb_dat[W-1:0];
+      if (wsel[S_XE]) xe_q <= i_wb_dat[W-1:0];
+      if (wsel[S_YE]) ye_q <= i_wb_dat[W-1:0];
     end
   end
 
@@ -114,49 +149,36 @@ module wb_regs #(
       o_clear <= 1'b0;
       o_push <= 1'b0;
     end else begin
-      o_abort <= wr && adr == A_CTRL && i_wb_dat[CTRL_ABORT];
-      o_clear <= wr && adr == A_CTRL && i_wb_dat[CTRL_CLEAR];
-      o_push <= wr && adr == A_PUSH && !i_full;
+      o_abort <= wsel[S_WCTRL] & i_wb_dat[CTRL_ABORT];
+      o_clear <= wsel[S_WCTRL] & i_wb_dat[CTRL_CLEAR];
+      o_push <= wsel[S_PUSH] & ~i_full;
     end
   end
 
   // Sticky reject: a push to a full queue.
   always @(posedge i_clk) begin
     if (i_rst || o_clear) reject_q <= 1'b0;
-    else if (wr && adr == A_PUSH && i_full) reject_q <= 1'b1;
+    else if (wsel[S_PUSH] & i_full) reject_q <= 1'b1;
   end
 
-  // Read data. The configuration (FEED, the step timing) and the staged
-  // block are write only (regmap.def): only status, counters and CTRL.SRC
-  // reach the read multiplexer. The register loads the addressed word in
-  // every clock, whatever the access (Wishbone reads DAT_O only with ACK,
-  // the clock after the strobe): no enable and no clear from the strobe
-  // and the write enable, which made the address decode deeper (issue 15).
-  reg [31:0] rdata;
-  always @(*) begin
-    rdata = 32'd0;
-    case (adr)
-      A_ID: rdata = R_ID;
-      A_PARAMS: begin
-        rdata[PARAMS_W +: 8] = W[7:0];
-        rdata[PARAMS_QDEPTH +: 8] = QDEPTH[7:0];
-      end
-      A_CTRL: rdata[CTRL_SRC +: 2] = o_src;
-      A_STATUS: begin
-        rdata[STATUS_BUSY] = i_busy;
-        rdata[STATUS_EMPTY] = (i_level == 0);
-        rdata[STATUS_FULL] = i_full;
-        rdata[STATUS_OVERRUN] = i_overrun;
-        rdata[STATUS_REJECT] = reject_q;
-        rdata[STATUS_LEVEL +: QAW+2] = i_level;
-      end
-      A_OVR_COUNT: rdata[15:0] = i_ovr_count;
-      A_POS_X: rdata = i_pos_x;
-      A_POS_Y: rdata = i_pos_y;
-      A_MOVES: rdata = i_moves;
-      default: ;
-    endcase
-  end
+  // Read data: the word rsel_q selects (all zero: a write-only or unused
+  // word reads 0), an AND-OR of the sources, loaded in every clock (the
+  // master reads DAT_O only with ACK). The configuration (FEED, the step
+  // timing) and the staged block are write only (regmap.def).
+  wire [31:0] params = {16'd0, QDEPTH[7:0], W[7:0]};
+  wire [31:0] status;
+  assign status[STATUS_BUSY] = i_busy;
+  assign status[STATUS_EMPTY] = (i_level == 0);
+  assign status[STATUS_FULL] = i_full;
+  assign status[STATUS_OVERRUN] = i_overrun;
+  assign status[STATUS_REJECT] = reject_q;
+  assign status[7:5] = 3'd0;
+  assign status[STATUS_LEVEL +: 8] = {{(6-QAW){1'b0}}, i_level};
+  assign status[31:16] = 16'd0;
+  wire [31:0] rdata = ({32{rsel_q[S_ID]}} & R_ID) | ({32{rsel_q[S_PARAMS]}} & params) |
+                      ({32{rsel_q[S_CTRL]}} & {30'd0, o_src}) | ({32{rsel_q[S_STATUS]}} & status) |
+                      ({32{rsel_q[S_OVR]}} & {16'd0, i_ovr_count}) | ({32{rsel_q[S_POS_X]}} & i_pos_x) |
+                      ({32{rsel_q[S_POS_Y]}} & i_pos_y) | ({32{rsel_q[S_MOVES]}} & i_moves);
   always @(posedge i_clk) o_wb_dat <= rdata;
 
 endmodule
