@@ -1,6 +1,6 @@
 // board_ctl: the LINK window (link.def): the watchdog, the feed hold and
 // its time scale, the pins' control, the frame counters. A Wishbone B4
-// classic slave like wb_regs (ack one clock after the strobe).
+// classic slave (ack one clock after the strobe; wb_regs takes two).
 //
 // Time scale: SCALE (0..0x10000) moves by one toward its target every RAMP
 // clocks: toward 0 while a hold is asked for (CTRL.HOLD, or the watchdog

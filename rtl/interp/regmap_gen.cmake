@@ -23,7 +23,9 @@ string(APPEND vh "// A table: no one module uses every entry of it (waiver in rt
 set(md "# interp_top register map\n\n")
 string(APPEND md "Generated from `rtl/interp/regmap.def` by `rtl/interp/regmap_gen.cmake`: do not edit.\n")
 string(APPEND md "Wishbone B4 classic slave, 32-bit data, byte offsets of 32-bit words;\n")
-string(APPEND md "writes take the whole word (`SEL` is ignored). The same table gives\n")
+string(APPEND md "writes take the whole word (`SEL` is ignored). Every access is acknowledged\n")
+string(APPEND md "two clocks after `STB` (two wait states; the read data comes with `ACK`):\n")
+string(APPEND md "a master holds its signals until `ACK` and waits for it. The same table gives\n")
 string(APPEND md "`gen/interp_regs.h` (C, build tree) and `rtl/interp/interp_regs.vh` (Verilog).\n\n")
 string(APPEND md "| offset | name | access | reset | bits | description |\n|---|---|---|---|---|---|\n")
 
