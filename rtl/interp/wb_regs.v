@@ -181,4 +181,87 @@ module wb_regs #(
                       ({32{rsel_q[S_POS_Y]}} & i_pos_y) | ({32{rsel_q[S_MOVES]}} & i_moves);
   always @(posedge i_clk) o_wb_dat <= rdata;
 
+`ifdef FORMAL
+  // ------------------------------------------------------------- formal
+  // Proved unbounded by rtl/interp/formal/prove_regs.sh (ctest
+  // interp_regs_formal, ABC's PDR) for any master that keeps to Wishbone
+  // B4 classic: once an access has started it holds CYC, STB, WE, the
+  // address and the data until ACK (it may drop or change them in the
+  // ACK clock). f_out_q: the master's access is outstanding (started, no
+  // ACK yet); f_start: an access starts in this clock.
+  reg f_past, f_past2, f_out_q;
+  initial f_past = 1'b0;
+  initial f_past2 = 1'b0;
+  always @(posedge i_clk) begin
+    f_past <= 1'b1;
+    f_past2 <= f_past;
+  end
+  always @(*) if (!f_past) assume (i_rst);
+  always @(posedge i_clk) begin
+    if (i_rst | o_wb_ack) f_out_q <= 1'b0;
+    else if (i_wb_cyc & i_wb_stb) f_out_q <= 1'b1;
+  end
+  wire f_start = i_wb_cyc & i_wb_stb & ~f_out_q & ~i_rst;
+  reg f_we_q;
+  reg [7:0] f_adr_q;
+  reg [31:0] f_dat_q;
+  always @(posedge i_clk) begin
+    f_we_q <= i_wb_we;
+    f_adr_q <= i_wb_adr;
+    f_dat_q <= i_wb_dat;
+  end
+  always @(*)
+    if (f_past && f_out_q && !o_wb_ack)
+      assume (i_wb_cyc && i_wb_stb && i_wb_we == f_we_q && i_wb_adr == f_adr_q && i_wb_dat == f_dat_q);
+  // What the read of the address on the bus returns, from the inputs of
+  // this clock (a case on the address, not the one-hot selects).
+  reg [31:0] f_word;
+  always @(*) begin
+    f_word = 32'd0;
+    case (adr)
+      A_ID: f_word = R_ID;
+      A_PARAMS: f_word = {16'd0, QDEPTH[7:0], W[7:0]};
+      A_CTRL: f_word[CTRL_SRC +: 2] = o_src;
+      A_STATUS: begin
+        f_word[STATUS_BUSY] = i_busy;
+        f_word[STATUS_EMPTY] = (i_level == 0);
+        f_word[STATUS_FULL] = i_full;
+        f_word[STATUS_OVERRUN] = i_overrun;
+        f_word[STATUS_REJECT] = reject_q;
+        f_word[STATUS_LEVEL +: QAW+2] = i_level;
+      end
+      A_OVR_COUNT: f_word[15:0] = i_ovr_count;
+      A_POS_X: f_word = i_pos_x;
+      A_POS_Y: f_word = i_pos_y;
+      A_MOVES: f_word = i_moves;
+      default: ;
+    endcase
+  end
+  wire f_wr_push = f_start & i_wb_we & (adr == A_PUSH);
+  always @(posedge i_clk) begin
+    if (f_past && !$past(i_rst)) begin
+      // ACK two clocks after the access starts, and only then: one ACK
+      // an access, never two in a row.
+      assert (o_wb_ack == (f_past2 && !$past(i_rst, 2) && $past(f_start, 2)));
+      if (o_wb_ack) assert (!$past(o_wb_ack));
+      // A read returns the addressed word as it was in the clock before ACK.
+      if (o_wb_ack && !$past(i_wb_we, 2)) assert (o_wb_dat == $past(f_word));
+      // A write lands once, in the clock after the access starts: the
+      // word holds the access's data from the ACK on, and changes only so.
+      if (o_feed != $past(o_feed))
+        assert (f_past2 && $past(f_start & i_wb_we & (adr == A_FEED), 2));
+      if (f_past2 && !$past(i_rst, 2) && $past(f_start & i_wb_we & (adr == A_FEED), 2))
+        assert (o_feed == $past(i_wb_dat, 2));
+      if (xs_q != $past(xs_q)) assert (f_past2 && $past(f_start & i_wb_we & (adr == A_BLK_XS), 2));
+      if (o_src != $past(o_src)) assert (f_past2 && $past(f_start & i_wb_we & (adr == A_CTRL), 2));
+      // A PUSH write pushes once, unless the queue is full in the clock
+      // after it starts (then REJECT is set instead).
+      assert (o_push == (f_past2 && !$past(i_rst, 2) && $past(f_wr_push, 2) && !$past(i_full)));
+      if (f_past2 && !$past(i_rst, 2) && $past(f_wr_push, 2) && $past(i_full)) assert (reject_q);
+      // ABORT and CLEAR only from a CTRL write.
+      if (o_abort | o_clear) assert (f_past2 && $past(f_start & i_wb_we & (adr == A_CTRL), 2));
+    end
+  end
+`endif
+
 endmodule
