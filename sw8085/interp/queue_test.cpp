@@ -218,6 +218,31 @@ TEST(Queue, LongLineRunsAsSegmentsBackToBack) {
   EXPECT_EQ(pulses, want);
 }
 
+// Arcs run as segments (a new one at every byte wrap, crossing, axis
+// arrival and every 256 pulses; some a single pulse long), each written by
+// the host as a slot frees while the command train runs and started at the
+// end of the one before it (armed by the main loop; or, when it had no
+// time, by the next command through h_idle): at a rate the program keeps
+// up with (a command every 320 T), no command is lost or idle and the
+// pulses are the model's. (Seen passing with the main loop's arming
+// broken: h_idle and the RST 7.5 latch carry it at this rate.)
+TEST(Queue, ArcSegmentsBackToBackUnderACommandTrain) {
+  Host h;
+  const std::vector<Move> moves = {short_arc(kMax, 0, Sense::CCW, 1500), Move::arc(300, 0, 300, 0, Sense::CW),
+                                   Move::arc(-256, 1, 1, 256, Sense::CW), short_arc(5, -16777200, Sense::CW, 900),
+                                   Move::line(3, 5)};
+  std::vector<Pulse> pulses;
+  const Host::Timed t = h.drive(moves, 320.0, &pulses);
+  ASSERT_TRUE(t.all_done);
+  EXPECT_EQ(t.overruns, 0u);
+  EXPECT_EQ(t.idle_commands, 0u);
+  EXPECT_EQ(t.commands, t.pulses);
+  std::vector<Pulse> want;
+  for (const auto& m : moves)
+    for (const auto& s : run_model<24>(m).steps) want.push_back(s.pulse);
+  EXPECT_EQ(pulses, want);
+}
+
 TEST(Overrun, SlowEnoughCommandsLoseNone) {
   Host h;
   const std::vector<Move> moves = {Move::line(300, -211), Move::arc(40, 9, -9, 40, Sense::CCW)};
