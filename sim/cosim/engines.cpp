@@ -648,8 +648,8 @@ bool BoardCosimEngine::slot_free(int i) {
 void BoardCosimEngine::queue_next() {
   const std::uint8_t base = sw8085::kSlots[slots_.next_slot];
   std::array<std::uint8_t, 256> img{};
-  auto sm = sw8085::encode_segment(moves_[next_move_].move, next_segment_, base, *codes_,
-                                   std::span<std::uint8_t, 256>(img));
+  if (!segmenter_) segmenter_.emplace(moves_[next_move_].move);
+  auto sm = segmenter_->next(base, *codes_, std::span<std::uint8_t, 256>(img));
   const int lo = base + sw8085::kSlotLow, hi = base + sw8085::kStatus;  // the slot
   for (int a = 0; a < 256; ++a)
     if (img[a] != 0 && (a < lo || a > hi))
@@ -657,7 +657,7 @@ void BoardCosimEngine::queue_next() {
   for (int a = lo; a < hi; ++a) poke(static_cast<std::uint8_t>(a), img[a]);
   poke(static_cast<std::uint8_t>(hi), sw8085::kQueued);
   slots_.push(sm, next_move_);
-  if (++next_segment_ == sm.segments) next_segment_ = 0, ++next_move_;  // a long line's next segment, else the next move
+  if (!segmenter_->more()) segmenter_.reset(), ++next_move_;  // else the move's next segment
 }
 
 void BoardCosimEngine::host_thread() {
@@ -697,7 +697,7 @@ void BoardCosimEngine::host_thread() {
 void BoardCosimEngine::begin_case(const Case& c) {
   moves_ = place(c.moves);
   next_move_ = 0;
-  next_segment_ = 0;
+  segmenter_.reset();
   slots_.clear();
   waited_ = 0;
   error_.clear();

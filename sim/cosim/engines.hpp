@@ -221,7 +221,7 @@ class CoreCosimEngine final : public VerilatedCosimEngine {
 
 // What the host of the 8085 engines wrote into the program's two mailbox
 // slots: every write in order (a move, or one segment of a line of more
-// than 65536 P steps), the move each belongs to, and the write each slot
+// than 65536 P steps or of an arc), the move each belongs to, and the write each slot
 // holds now.
 struct SlotLog {
   std::vector<sw8085::SlotMove> writes;
@@ -302,7 +302,7 @@ class BoardCosimEngine final : public VerilatedCosimEngine {
   std::unique_ptr<sw8085::Codes> codes_;
   std::vector<Placed> moves_;
   std::size_t next_move_ = 0;
-  int next_segment_ = 0;  // of moves_[next_move_]: a long line runs as segments (sw8085::segments)
+  std::optional<sw8085::Segmenter> segmenter_;  // of moves_[next_move_]: a long line and an arc run as segments
   SlotLog slots_;
   std::size_t waited_ = 0;  // moves that waited for a free slot (coverage)
   // Every host port access happens in host_thread; the controller asks.

@@ -130,10 +130,10 @@ void Host::boot() {
   bus_.outs.clear();
 }
 
-SlotMove Host::write(const Move& m, int segment) {
+SlotMove Host::write(Segmenter& seg) {
   const std::uint8_t base = kSlots[next_slot_];
   auto mb = bus_.mailbox();
-  SlotMove sm = encode_segment(m, segment, base, codes_, mb);
+  SlotMove sm = seg.next(base, codes_, mb);
   mb[static_cast<std::uint8_t>(base + kStatus)] = kQueued;
   slots_[next_slot_] = sm;
   next_slot_ ^= 1;
@@ -143,24 +143,26 @@ SlotMove Host::write(const Move& m, int segment) {
 SlotMove Host::queue(const Move& m) {
   validate<24>(m);
   const std::uint8_t base = kSlots[next_slot_];
-  if (!pending_.empty())
-    throw std::logic_error("sw8085: segments of " + describe(pending_.front().move) + " still wait for a slot");
+  if (pending_)
+    throw std::logic_error("sw8085: segments of " + describe(pending_->next_move()) + " still wait for a slot");
   if (!slot_free(next_slot_))
     throw std::logic_error("sw8085: slot " + std::to_string(base) + " still holds " + describe(slots_[next_slot_]->move));
-  const SlotMove sm = write(m, 0);
-  for (int i = 1; i < sm.segments; ++i) pending_.push_back({m, i});
+  Segmenter seg(m);
+  const SlotMove sm = write(seg);
+  if (seg.more()) pending_.emplace(std::move(seg));
   return sm;
 }
 
 std::vector<SlotMove> Host::pump() {
   std::vector<SlotMove> w;
-  std::size_t i = 0;
-  for (; i < pending_.size() && slot_free(next_slot_); ++i) w.push_back(write(pending_[i].move, pending_[i].segment));
-  pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(i));
+  while (pending_ && slot_free(next_slot_)) {
+    w.push_back(write(*pending_));
+    if (!pending_->more()) pending_.reset();
+  }
   return w;
 }
 
-bool Host::can_queue() const { return pending_.empty() && slot_free(next_slot_); }
+bool Host::can_queue() const { return !pending_ && slot_free(next_slot_); }
 
 CommandResult Host::command() {
   CommandResult r;
@@ -313,7 +315,7 @@ Host::Timed Host::drive(const std::vector<Move>& moves, double period, std::vect
   bus_.outs.clear();
   while (true) {
     feed();
-    if (next == moves.size() && pending_.empty() && (!last || done(*last))) {
+    if (next == moves.size() && !pending_ && (!last || done(*last))) {
       res.all_done = true;
       break;
     }

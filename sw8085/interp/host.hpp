@@ -74,8 +74,8 @@ class Host {
   // Throws std::logic_error if that slot still holds a move not finished
   // (or a move's segments still wait: !can_queue()). A move that is done at
   // once (a line to (0, 0)) is not queued. A line of more than
-  // line::kSegment P steps runs as segments: its first one is queued and
-  // returned, the others wait for pump().
+  // line::kSegment P steps and an arc run as segments (Segmenter): the
+  // first one is queued and returned, the others wait for pump().
   SlotMove queue(const Move& m);
   // Writes the waiting segments into the slots as they become free (in
   // order); returns those written.
@@ -128,12 +128,8 @@ class Host {
   std::uint16_t sp_idle_ = 0;
   int next_slot_ = 0;
   std::array<std::optional<SlotMove>, 2> slots_;
-  struct Segment {
-    Move move;
-    int segment;
-  };
-  std::vector<Segment> pending_;  // segments not yet written, in order
-  SlotMove write(const Move& m, int segment);
+  std::optional<Segmenter> pending_;  // the last move's segments not yet written
+  SlotMove write(Segmenter& seg);
 };
 
 // The program as a contour Engine ("iss": on the ISS; "cpu": on the

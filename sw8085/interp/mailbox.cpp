@@ -20,14 +20,6 @@ std::uint32_t get24(std::span<const std::uint8_t, 256> mb, std::uint8_t addr) {
   return v;
 }
 
-// A distance counter: nested-loop bytes (see mailbox.hpp).
-std::array<std::uint8_t, 3> to_counter(std::int64_t v) {
-  if (v == 0) return {0, 0, 0};
-  const std::int64_t w = v - 1;
-  return {static_cast<std::uint8_t>((w & 0xFF) + 1), static_cast<std::uint8_t>(((w >> 8) & 0xFF) + 1),
-          static_cast<std::uint8_t>((w >> 16) + 1)};
-}
-
 std::uint8_t need(const std::map<std::string, std::uint16_t>& s, const char* name) {
   const auto it = s.find(name);
   if (it == s.end()) throw std::runtime_error(std::string("interp.lst: symbol ") + name + " is missing");
@@ -47,8 +39,7 @@ Codes Codes::from_symbols(const std::map<std::string, std::uint16_t>& s) {
   };
   static constexpr Family kFamilies[] = {
       {"FINP", false, true}, {"FINN", true, true},  {"AIX", false, false}, {"AOY", true, false},
-      {"AIY", false, false}, {"AOX", true, false},  {"EIX", false, false}, {"EOY", true, false},
-      {"EIY", false, false}, {"EOX", true, false},  {"FIXP", false, false}, {"FIXN", true, false},
+      {"AIY", false, false}, {"AOX", true, false},  {"FIXP", false, false}, {"FIXN", true, false},
       {"FOYP", false, false}, {"FOYN", true, false}, {"FIYP", false, false}, {"FIYN", true, false},
       {"FOXP", false, false}, {"FOXN", true, false}};
   for (const auto& f : kFamilies)
@@ -128,12 +119,20 @@ std::int64_t line_d_after_p(const LineGeom& g, std::int64_t pp) {
 }  // namespace
 
 int segments(const Move& m) {
-  if (m.is_arc() || (m.xe == 0 && m.ye == 0)) return 1;
+  if (m.is_arc()) throw std::logic_error("sw8085::segments: an arc's segments are known by walking it (Segmenter)");
+  if (m.xe == 0 && m.ye == 0) return 1;
   const std::int64_t ps = line_geom(m).psteps;
   return static_cast<int>((ps + line::kSegment - 1) / line::kSegment);
 }
 
 SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<std::uint8_t, 256> mb) {
+  if (m.is_arc()) {
+    Segmenter seg(m);
+    const SlotMove sm = seg.next(base, codes, mb);
+    if (seg.more())
+      throw std::logic_error("sw8085::encode: " + describe(m) + " runs as more than one segment (Segmenter)");
+    return sm;
+  }
   if (segments(m) != 1)
     throw std::logic_error("sw8085::encode: " + describe(m) + " has more than " + std::to_string(line::kSegment) +
                            " P steps: it runs as segments (encode_segment)");
@@ -158,6 +157,7 @@ SlotMove encode_segment(const Move& m, int segment, std::uint8_t base, const Cod
     if (segment < 0 || segment >= sm.segments)
       throw std::logic_error("sw8085::encode_segment: " + describe(m) + " has no segment " + std::to_string(segment));
     sm.segment = segment;
+    sm.last_segment = segment + 1 == sm.segments;
     sm.seg_first = line::kSegment * segment;
     sm.seg_len = std::min(line::kSegment, g.psteps - sm.seg_first);
     // The segment starts where the walk is after the P step that ends the
@@ -175,84 +175,144 @@ SlotMove encode_segment(const Move& m, int segment, std::uint8_t base, const Cod
     put24(mb, at(base, line::kA), static_cast<std::uint32_t>(g.p));
     return sm;
   }
-  if (segment != 0) throw std::logic_error("sw8085::encode_segment: an arc has one segment");
-  const auto plan = Circular<24>::validate(m.xs, m.ys, m.xe, m.ye, m.sense);
-  const int q = plan.q_start;
-  const bool ix = inward_is_x(q, m.sense);
-  const std::int64_t cx = abs64(m.xs), cy = abs64(m.ys), ex = abs64(m.xe), ey = abs64(m.ye);
-  std::string mode;
-  if (plan.crossings > 0) {
-    mode = ix ? "AIX" : "AIY";
-  } else {
-    const bool in_done = ix ? cx == ex : cy == ey;
-    const bool out_done = ix ? cy == ey : cx == ex;
-    if (in_done && out_done) throw std::logic_error("sw8085::encode: an arc with k = 0 that starts at its end");
-    if (in_done) mode = ix ? "FOYP" : "FOXP";
-    else if (out_done) mode = ix ? "FIXP" : "FIYP";
-    else mode = ix ? "EIX" : "EIY";
+  // An arc: Segmenter's write number `segment`, walked from the start.
+  Segmenter seg(m);
+  std::array<std::uint8_t, 256> scratch{};
+  for (int i = 0; i < segment; ++i) {
+    if (!seg.more()) throw std::logic_error("sw8085::encode_segment: " + describe(m) + " has no segment " + std::to_string(segment));
+    seg.next(base, codes, scratch);
   }
-  mb[at(base, kMode)] = codes.code(mode, 0);  // D = 0: D >= 0, p = 0
-  put24(mb, at(base, arc::kD), 0);
-  put24(mb, at(base, arc::kCx), static_cast<std::uint32_t>(cx));
-  put24(mb, at(base, arc::kCy), static_cast<std::uint32_t>(cy));
-  // The distances to the end in the end quadrant: from the start if the
-  // arc starts there, else from where it enters it (the outward axis at 0,
-  // the inward one at ceil(sqrt(R^2 - 1)): docs/sw8085.md, "Crossings").
-  std::int64_t rx = abs64(cx - ex), ry = abs64(cy - ey);
-  if (plan.crossings > 0) {
-    const std::int64_t entry = isqrt_ceil(plan.r2 - 1);
-    const bool eix = inward_is_x(plan.q_end, m.sense);
-    rx = eix ? entry - ex : ex;
-    ry = eix ? ey : entry - ey;
+  if (!seg.more()) throw std::logic_error("sw8085::encode_segment: " + describe(m) + " has no segment " + std::to_string(segment));
+  SlotMove r = seg.next(base, codes, mb);
+  r.segment = segment;
+  return r;
+}
+
+// ---- arcs: the host's walk and its segments ----------------------------------
+
+namespace {
+// Table Q's signs (docs/algorithm.md).
+int sign_x(int q) { return q == 0 || q == 3 ? 1 : -1; }
+int sign_y(int q) { return q < 2 ? 1 : -1; }
+}  // namespace
+
+int ArcWalk::family() const {
+  if (k != 0 || done) return 0;
+  const bool ix = in_x();
+  if ((ix ? ay : ax) == (ix ? ey : ex)) return 1;  // the outward axis is at its end
+  if ((ix ? ax : ay) == (ix ? ex : ey)) return 2;  // the inward one
+  return 0;
+}
+
+State ArcWalk::state() const {
+  State s;
+  s.x = sign_x(q) * ax;
+  s.y = sign_y(q) * ay;
+  s.d = d;
+  s.quadrant = static_cast<std::uint8_t>(q);
+  s.crossings = static_cast<std::uint8_t>(k);
+  s.done = done;
+  return s;
+}
+
+ArcWalk::Step ArcWalk::step() {
+  if (done) throw std::logic_error("sw8085::ArcWalk: stepped past the end");
+  const bool ix = in_x();
+  std::int64_t& cin = ix ? ax : ay;
+  std::int64_t& cout = ix ? ay : ax;
+  const std::int64_t ein = ix ? ex : ey, eout = ix ? ey : ex;
+  bool inward = d >= 0;
+  if (k == 0) {
+    if (inward && cin == ein) inward = false;
+    else if (!inward && cout == eout) inward = true;
   }
-  const auto crx = to_counter(rx), cry = to_counter(ry);
-  for (int i = 0; i < 3; ++i) {
-    mb[at(base, arc::kRx[i])] = crx[i];
-    mb[at(base, arc::kRy[i])] = cry[i];
-  }
-  mb[at(base, arc::kK)] = at(base, arc::kTable + 4 * plan.crossings);
-  auto patterns = [&](int qq) {
-    const bool qix = inward_is_x(qq, m.sense);
-    const Axis in = qix ? Axis::X : Axis::Y, out = qix ? Axis::Y : Axis::X;
-    const int sin = in == Axis::X ? quadrant_sign_x(qq) : quadrant_sign_y(qq);
-    const int sout = out == Axis::X ? quadrant_sign_x(qq) : quadrant_sign_y(qq);
-    return std::pair<std::uint8_t, std::uint8_t>{pattern(in, -sin), pattern(out, sout)};
-  };
-  mb[at(base, arc::kPin)] = patterns(q).first;
-  mb[at(base, arc::kPout)] = patterns(q).second;
-  // The crossing table: the quadrant entered when k becomes k', and the
-  // start quadrant at the start's k (its code is not used).
-  const int step = m.sense == Sense::CCW ? 1 : 3;
-  {
-    const std::uint8_t e = at(base, arc::kTable + 4 * plan.crossings);
-    mb[static_cast<std::uint8_t>(e + 1)] = patterns(q).first;
-    mb[static_cast<std::uint8_t>(e + 2)] = patterns(q).second;
-    mb[static_cast<std::uint8_t>(e + arc::kEntryQ)] = static_cast<std::uint8_t>(q);
-  }
-  for (int kn = plan.crossings - 1; kn >= 0; --kn) {
-    const int qn = (q + step * (plan.crossings - kn)) & 3;
-    const bool nix = inward_is_x(qn, m.sense);
-    std::uint8_t code;
-    if (kn > 0) {
-      code = codes.code(nix ? "AIX" : "AIY", 0);
-    } else {
-      // The end quadrant: the new outward axis is at 0, the new inward one
-      // enters at ceil(sqrt(R^2 - 1)) (docs/sw8085.md, "Crossings"), so
-      // which axes are at their end is known now.
-      const std::int64_t entry = isqrt_ceil(plan.r2 - 1);
-      const bool out_done = (nix ? ey : ex) == 0;
-      const bool in_done = (nix ? ex : ey) == entry;
-      if (in_done && out_done) code = codes.fin_p[0] | 0x80;  // the move ends on entering
-      else if (in_done) code = codes.code(nix ? "FOYP" : "FOXP", 0);
-      else if (out_done) code = codes.code(nix ? "FIXP" : "FIYP", 0);
-      else code = codes.code(nix ? "EIX" : "EIY", 0);
+  Step st;
+  if (inward) {
+    st.before = cin;
+    d -= 2 * cin - 1;
+    --cin;
+    st.after = cin;
+    const int s = ix ? sign_x(q) : sign_y(q);
+    st.pulse = Pulse{ix ? Axis::X : Axis::Y, static_cast<std::int8_t>(-s)};
+    if (cin == 0) {
+      q = (q + (cw ? 3 : 1)) & 3;
+      --k;
     }
-    const std::uint8_t e = at(base, arc::kTable + 4 * kn);
-    mb[e] = code;
-    mb[static_cast<std::uint8_t>(e + 1)] = patterns(qn).first;
-    mb[static_cast<std::uint8_t>(e + 2)] = patterns(qn).second;
-    mb[static_cast<std::uint8_t>(e + arc::kEntryQ)] = static_cast<std::uint8_t>(qn);
+  } else {
+    st.before = cout;
+    d += 2 * cout + 1;
+    ++cout;
+    st.after = cout;
+    const int s = ix ? sign_y(q) : sign_x(q);
+    st.pulse = Pulse{ix ? Axis::Y : Axis::X, static_cast<std::int8_t>(s)};
   }
+  done = k == 0 && ax == ex && ay == ey;
+  return st;
+}
+
+Segmenter::Segmenter(const Move& m) : m_(m) {
+  if (!m.is_arc()) return;
+  const auto plan = Circular<24>::validate(m.xs, m.ys, m.xe, m.ye, m.sense);
+  walk_.ax = abs64(m.xs);
+  walk_.ay = abs64(m.ys);
+  walk_.ex = abs64(m.xe);
+  walk_.ey = abs64(m.ye);
+  walk_.q = plan.q_start;
+  walk_.k = plan.crossings;
+  walk_.cw = m.sense == Sense::CW;
+  walk_.done = walk_.k == 0 && walk_.ax == walk_.ex && walk_.ay == walk_.ey;
+  if (walk_.done) throw std::logic_error("sw8085::Segmenter: an arc with k = 0 that starts at its end");
+}
+
+SlotMove Segmenter::next(std::uint8_t base, const Codes& codes, std::span<std::uint8_t, 256> mb) {
+  if (!more_) throw std::logic_error("sw8085::Segmenter: " + describe(m_) + " has no segment left");
+  if (!m_.is_arc()) {
+    SlotMove sm = encode_segment(m_, segment_++, base, codes, mb);
+    more_ = !sm.last();
+    return sm;
+  }
+  SlotMove sm;
+  sm.move = m_;
+  sm.base = base;
+  sm.arc = true;
+  sm.segment = segment_++;
+  sm.q = walk_.q;
+  sm.k = walk_.k;
+  // The segment's start: the family by the walk's state, the code by the
+  // sign and parity of D (D = 2D' + p).
+  const ArcWalk w0 = walk_;
+  const bool ix = w0.in_x(), neg = w0.d < 0;
+  const int fam = w0.family();
+  const char* name = fam == 0   ? (neg ? (ix ? "AOY" : "AOX") : (ix ? "AIX" : "AIY"))
+                     : fam == 1 ? (ix ? (neg ? "FIXN" : "FIXP") : (neg ? "FIYN" : "FIYP"))
+                                : (ix ? (neg ? "FOYN" : "FOYP") : (neg ? "FOXN" : "FOXP"));
+  const int p = static_cast<int>(w0.d & 1);
+  const std::int64_t dp = (w0.d - p) / 2;
+  mb[at(base, kMode)] = codes.code(name, p);
+  put24(mb, at(base, arc::kD), static_cast<std::uint32_t>(dp & 0xFFFFFF));
+  put24(mb, at(base, arc::kCx), static_cast<std::uint32_t>(w0.ax));
+  put24(mb, at(base, arc::kCy), static_cast<std::uint32_t>(w0.ay));
+  const Axis in = ix ? Axis::X : Axis::Y, out = ix ? Axis::Y : Axis::X;
+  mb[at(base, arc::kPin)] = pattern(in, -(ix ? sign_x(w0.q) : sign_y(w0.q)));
+  mb[at(base, arc::kPout)] = pattern(out, ix ? sign_y(w0.q) : sign_x(w0.q));
+  // Walk to the segment's last pulse: the first that wraps a coordinate's
+  // low byte, changes q, k or the family, or ends the move; at most
+  // kSegmentPulses.
+  int n = 0;
+  ArcWalk::Step st;
+  while (true) {
+    st = walk_.step();
+    ++n;
+    if (walk_.done || n == arc::kSegmentPulses || (st.before >> 8) != (st.after >> 8) || walk_.q != w0.q ||
+        walk_.k != w0.k || walk_.family() != fam)
+      break;
+  }
+  mb[at(base, arc::kN)] = static_cast<std::uint8_t>(n & 0xFF);
+  mb[at(base, arc::kPlast)] = pattern(st.pulse.axis, st.pulse.sign);
+  sm.pulses = n;
+  sm.end = walk_.state();
+  more_ = !walk_.done;
+  sm.last_segment = !more_;
   return sm;
 }
 
@@ -344,28 +404,23 @@ State decode(const SlotMove& sm, std::span<const std::uint8_t, 256> mb, const Co
   if (!sm.arc) return decode_line(sm, mb, s, bad);
   const auto it = codes.arc.find(mode);
   if (it == codes.arc.end()) throw bad("no arc state has this MODE");
-  s.done = it->second.done;
+  if (it->second.done) {
+    // A finished segment: its last pulse skipped the D' and coordinate
+    // update (the done code says it); the walk is where the host's walk
+    // found that pulse to end (the move's end for its last segment).
+    State e = sm.end;
+    e.pulses = pulses;
+    e.done = sm.last();
+    return e;
+  }
   const std::int64_t d24 = get24(mb, at(base, arc::kD));
   const std::int64_t dp = it->second.neg ? d24 - (std::int64_t{1} << 24) : d24;
   s.d = 2 * dp + it->second.parity;
-  const int k4 = static_cast<std::uint8_t>(mb[at(base, arc::kK)] - base - arc::kTable);
-  if (k4 % 4 != 0 || k4 > 16) throw bad("k pointer " + std::to_string(mb[at(base, arc::kK)]) + " is no table entry");
-  s.crossings = static_cast<std::uint8_t>(k4 / 4);
-  // q is the q of k's table entry: the program moves the pointer.
-  const int q = mb[static_cast<std::uint8_t>(mb[at(base, arc::kK)] + arc::kEntryQ)];
-  if (q > 3) throw bad("quadrant " + std::to_string(q) + " out of range");
-  s.quadrant = static_cast<std::uint8_t>(q);
-  if (s.done) {
-    // A finished arc is at its end point: its last pulse skips the D' and
-    // coordinate update (the done code says it), so those bytes are not read.
-    const Move& m = sm.move;
-    s.x = m.xe;
-    s.y = m.ye;
-    s.d = m.xe * m.xe + m.ye * m.ye - (m.xs * m.xs + m.ys * m.ys);
-    return s;
-  }
-  s.x = quadrant_sign_x(q) * std::int64_t{get24(mb, at(base, arc::kCx))};
-  s.y = quadrant_sign_y(q) * std::int64_t{get24(mb, at(base, arc::kCy))};
+  // q and k are the segment's (a crossing ends a segment).
+  s.crossings = static_cast<std::uint8_t>(sm.k);
+  s.quadrant = static_cast<std::uint8_t>(sm.q);
+  s.x = quadrant_sign_x(sm.q) * std::int64_t{get24(mb, at(base, arc::kCx))};
+  s.y = quadrant_sign_y(sm.q) * std::int64_t{get24(mb, at(base, arc::kCy))};
   return s;
 }
 

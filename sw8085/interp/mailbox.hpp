@@ -42,7 +42,7 @@ inline constexpr std::uint8_t kIdleCount = 0x08;  // 2 bytes: command pulses ser
 inline constexpr std::uint8_t kLayout = 0x0A;     // kLayoutVersion
 inline constexpr std::uint8_t kStubs = 0x0B;      // the program's dispatch stubs (JMPs), up to the slots
 inline constexpr std::uint8_t kReadyMagic = 0x5A;
-inline constexpr std::uint8_t kLayoutVersion = 7;
+inline constexpr std::uint8_t kLayoutVersion = 8;
 // The routine that ends a move reads PEND and writes ACTIVE with one DCR L.
 static_assert(kActive + 1 == kPend, "interp.a80 FINISH: MB_ACTIVE must be MB_PEND - 1");
 
@@ -83,26 +83,21 @@ inline constexpr std::uint8_t kModeNonNeg = 0xFF, kModeNeg = 0x00;
 constexpr std::uint8_t done_code(std::uint8_t base) { return static_cast<std::uint8_t>(base + 1); }
 }  // namespace line
 
-// Arc slot.
+// Arc slot: one segment of an arc. The host runs every arc as segments
+// (Segmenter): a segment ends on the pulse where a coordinate's low byte
+// would wrap, an inward coordinate land on 0 (a quadrant crossing), an
+// axis arrive at its end in the end quadrant (the switch to a forced
+// family), the move end, or after kSegmentPulses pulses; that last pulse
+// goes out from kPlast with no update, and the next segment starts from
+// the contract's state after it. Inside a segment the quadrant, k and the
+// family are fixed and a step changes byte 0 of its coordinate only.
 namespace arc {
-inline constexpr int kPout = -2, kPin = -1;
+inline constexpr int kN = -1;                 // pulses left in the segment (0: 256), counted by the dispatch
+inline constexpr int kPin = -2, kPout = -3;   // the quadrant's OUT patterns
+inline constexpr int kPlast = -4;             // the segment's last pulse
 inline constexpr int kD = 0x01;    // D', 3 bytes; its sign and p (D = 2*D' + p) from MODE
 inline constexpr int kCx = 0x07, kCy = 0x0D;  // 3 bytes each
-// The distance to the end on each axis in the end quadrant (the host's
-// value from the entry point, or from the start if the arc starts there):
-// distance counters as the line's, byte 0 below the coordinate.
-// Bytes 0, 1, 2 downwards just below the coordinate.
-inline constexpr std::array<int, 3> kRx = {0x06, 0x05, 0x04};
-inline constexpr std::array<int, 3> kRy = {0x0C, 0x0B, 0x0A};
-// k, stored as the mailbox address of its crossing-table entry:
-// base + kTable + 4k (mod 256).
-inline constexpr int kK = -3;
-// The crossing table: for k' = 0..4, the entry of the quadrant entered when
-// k becomes k' (and for the start's k, the start quadrant): CODE (the new
-// family's code for p = 0, D >= 0; bit 7 set if the move ends on entering
-// that quadrant), PIN, POUT, q. The slot's q is the q of k's entry.
-inline constexpr int kTable = 0x14;
-inline constexpr int kEntryQ = 3;  // q's offset in an entry
+inline constexpr int kSegmentPulses = 256;
 }  // namespace arc
 
 // The MODE codes: assigned by the assembler (C_xxx in interp.a80), read from
@@ -148,21 +143,65 @@ struct SlotMove {
   // line: the P steps of the whole move, and the segment of them this slot
   // runs (the whole move unless it has more than line::kSegment).
   std::int64_t psteps = 0, seg_first = 0, seg_len = 0;
-  int segment = 0, segments = 1;
-  bool last() const { return segment + 1 == segments; }
+  int segment = 0, segments = 1;  // segments: a line's (an arc's count is not known ahead)
+  bool last_segment = true;
+  // arc: the segment's quadrant and crossings left (fixed in a segment), its
+  // pulses, and the state after its last pulse (the host's walk).
+  int q = 0, k = 0, pulses = 0;
+  State end{};
+  bool last() const { return last_segment; }
 };
 
-// How many slots a move takes: a line of more than line::kSegment P steps
-// runs as ceil(P steps / kSegment) segments, anything else as one.
+// How many slots a line takes: a line of more than line::kSegment P steps
+// runs as ceil(P steps / kSegment) segments, a shorter one as one. An arc
+// runs as segments too (Segmenter), how many is known only by walking it:
+// throws std::logic_error for an arc.
 int segments(const Move& m);
+
+// The host's own walk of an arc (the contract's step rule, docs/algorithm.md,
+// written again here: the model is the tests' oracle), from which it cuts
+// the arc into segments.
+struct ArcWalk {
+  std::int64_t ax = 0, ay = 0, ex = 0, ey = 0, d = 0;
+  int q = 0, k = 0;
+  bool cw = false, done = false;
+  bool in_x() const { return ((q & 1) == 0) != cw; }
+  // 0: the sign rule; 1: only inward (the outward axis at its end); 2: only outward.
+  int family() const;
+  State state() const;
+  struct Step {
+    Pulse pulse;
+    std::int64_t before = 0, after = 0;  // the stepped magnitude
+  };
+  Step step();
+};
+
+// The slot writes a move runs as, in order: a line's segments
+// (encode_segment), or an arc's, cut from the host's walk.
+class Segmenter {
+ public:
+  explicit Segmenter(const Move& m);  // validated, not done at once
+  bool more() const { return more_; }
+  const Move& next_move() const { return m_; }
+  // Writes the next segment into the slot at `base`, status not yet queued.
+  SlotMove next(std::uint8_t base, const Codes& codes, std::span<std::uint8_t, 256> mb);
+
+ private:
+  Move m_;
+  int segment_ = 0;
+  bool more_ = true;
+  ArcWalk walk_;
+};
 
 // Writes `m` (already validated, not done at once) into the slot at `base`
 // of the mailbox, status not yet queued. Returns what decode() needs.
-// Throws std::logic_error for a move of more than one segment.
+// Throws std::logic_error for a move of more than one segment (every arc
+// of more than one: use Segmenter).
 SlotMove encode(const Move& m, std::uint8_t base, const Codes& codes, std::span<std::uint8_t, 256> mb);
-// The same for segment `segment` (0 .. segments(m) - 1) of `m`: a line's
-// segment starts from the D and the position the contract's walk has after
-// the last P step of the segments before it (computed in closed form).
+// The same for segment `segment` (0 .. segments(m) - 1) of a line `m`: a
+// line's segment starts from the D and the position the contract's walk has
+// after the last P step of the segments before it (computed in closed
+// form). For an arc, Segmenter's write number `segment` (walked from the start).
 SlotMove encode_segment(const Move& m, int segment, std::uint8_t base, const Codes& codes,
                         std::span<std::uint8_t, 256> mb);
 

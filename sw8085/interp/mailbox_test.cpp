@@ -3,6 +3,7 @@
 // round-trip.
 #include <gtest/gtest.h>
 
+#include "interp/circular.hpp"
 #include "interp/linear.hpp"
 
 #include <cctype>
@@ -40,9 +41,7 @@ TEST(Mailbox, OffsetsAreTheProgramsEqus) {
       {"L_NQ", line::kNegQ}, {"L_PATP", line::kPatP}, {"L_PATQ", line::kPatQ}, {"L_PATE", line::kPatE},
       {"L_A", line::kA},
       {"A_D0", arc::kD}, {"A_CX", arc::kCx}, {"A_CY", arc::kCy},
-      {"A_RX0", arc::kRx[0]}, {"A_RX1", arc::kRx[1]}, {"A_RX2", arc::kRx[2]},
-      {"A_RY0", arc::kRy[0]}, {"A_RY1", arc::kRy[1]}, {"A_RY2", arc::kRy[2]},
-      {"A_K", arc::kK}, {"A_TAB", arc::kTable},
+      {"A_N", arc::kN}, {"A_PLAST", arc::kPlast},
       {"A_PIN", arc::kPin}, {"A_POUT", arc::kPout},
   };
   for (const Equ& e : equs) EXPECT_EQ(sym(e.name), e.value) << e.name;
@@ -77,7 +76,7 @@ TEST(Mailbox, CodesAreDistinctAndDispatchable) {
     EXPECT_GE(code, 1);
     EXPECT_LT(code, 0x80);  // 01h..7Fh: the dispatch's JP
   }
-  EXPECT_EQ(all.size(), 1u + 2 * 18);
+  EXPECT_EQ(all.size(), 1u + 2 * 14);
   // A family's code for D < 0 is its code for D >= 0 plus 3, the done codes
   // too (the program writes FIN codes as immediates with that rule).
   for (int p = 0; p < 2; ++p) EXPECT_EQ(c.fin_n[p], c.fin_p[p] + 3);
@@ -149,6 +148,68 @@ TEST(Mailbox, LineSegmentsStartOnTheModelsWalk) {
       EXPECT_EQ(end.done, k == n - 1) << describe(m);
     }
   }
+}
+
+// An arc runs as segments cut from the host's own walk: each segment's
+// start (decoded from its slot) is the state of the model's walk
+// (Circular<24>) after the pulses of the segments before it, its last-pulse
+// pattern is the model's pulse there, its end (a finished segment's
+// decoding) the model's state after it, and inside a segment no pulse but
+// the last one wraps a coordinate's low byte or changes q or k (what the
+// program does not handle: docs/sw8085.md).
+// An arc over about n pulses of the circle through (xs, ys), to an accepted end.
+Move walked_arc(std::int64_t xs, std::int64_t ys, Sense s, int n) {
+  Circular<24> walk(xs, ys, xs, ys, s);
+  for (int i = 0; i < n; ++i) walk.step();
+  auto near = [](const State& st) { return std::llabs(st.d) <= std::llabs(st.x) + std::llabs(st.y); };
+  while (!near(walk.state())) walk.step();
+  return Move::arc(xs, ys, walk.state().x, walk.state().y, s);
+}
+
+TEST(Mailbox, ArcSegmentsStartOnTheModelsWalk) {
+  const Codes c = Codes::from_symbols(Program::builtin().symbols);
+  const std::int64_t big = (std::int64_t{1} << 24) - 1;
+  int total = 0;
+  for (const Move& m : {Move::arc(300, 0, 300, 0, Sense::CCW), Move::arc(-256, 1, 1, 256, Sense::CW),
+                        Move::arc(1000, 0, 0, 1000, Sense::CCW), walked_arc(big, 0, Sense::CCW, 3000),
+                        walked_arc(5, -16777200, Sense::CW, 3000),
+                        Move::arc(6, 0, 0, 6, Sense::CCW), Move::arc(3, 4, -4, -3, Sense::CCW)}) {
+    Circular<24> walk(m.xs, m.ys, m.xe, m.ye, m.sense);
+    Segmenter seg(m);
+    std::uint64_t pulses = 0;
+    int n = 0;
+    while (seg.more()) {
+      std::array<std::uint8_t, 256> mb{};
+      const std::uint8_t base = kSlots[n % 2];
+      const SlotMove sm = seg.next(base, c, mb);
+      State start = decode(sm, mb, c, pulses);
+      ASSERT_EQ(start, walk.state()) << describe(m) << " segment " << n << ": got " << to_string(start);
+      const int len = mb[static_cast<std::uint8_t>(base + arc::kN)] == 0 ? 256 : mb[static_cast<std::uint8_t>(base + arc::kN)];
+      ASSERT_EQ(len, sm.pulses) << describe(m);
+      for (int i = 1; i <= len; ++i) {
+        const State before = walk.state();
+        const Pulse p = *walk.step();
+        ++pulses;
+        const State after = walk.state();
+        if (i < len) {
+          ASSERT_EQ(before.quadrant, after.quadrant) << describe(m) << " segment " << n << " pulse " << i;
+          ASSERT_EQ(before.crossings, after.crossings) << describe(m) << " segment " << n << " pulse " << i;
+          const auto hi = [](std::int64_t v) { return (v < 0 ? -v : v) >> 8; };
+          ASSERT_EQ(hi(before.x), hi(after.x)) << describe(m) << " segment " << n << " pulse " << i;
+          ASSERT_EQ(hi(before.y), hi(after.y)) << describe(m) << " segment " << n << " pulse " << i;
+        } else {
+          EXPECT_EQ(decode_pattern(mb[static_cast<std::uint8_t>(base + arc::kPlast)]), p) << describe(m);
+        }
+      }
+      mb[base] = c.fin_p[0];  // the program's done code after the last pulse
+      ASSERT_EQ(decode(sm, mb, c, pulses), walk.state()) << describe(m) << " end of segment " << n;
+      EXPECT_EQ(sm.last(), walk.done()) << describe(m);
+      ++n;
+    }
+    EXPECT_TRUE(walk.done()) << describe(m);
+    total += n;
+  }
+  EXPECT_GT(total, 40);  // byte wraps, crossings, arrivals and the 256-pulse cap cut them
 }
 
 // A line's Q coordinate is read from D (D = |XE|*|y| - |YE|*|x|): a D that
