@@ -6,7 +6,7 @@
 // Two pipeline stages, so that no path is longer than a multiplexer, or an
 // adder, or a comparator: stage 1 (the clock after i_push, o_wr) selects
 // the inward/outward magnitudes and the targets, and gives the early
-// fields of the prepared block (kind, sense, signs, q, k, ci, co, ADD);
+// fields of the prepared block (kind, sense, signs, q, k, ci, co, ADD, ti, to);
 // stage 2 (the clock after, o_wr_late) forms the late fields from stage
 // 1: SUB, the comparison constants and the flags. The queue stores the
 // two parts a clock apart (interp_core), so no field is carried through
@@ -28,7 +28,7 @@ module blk_prep #(
     input  wire [4*W+8:0] i_blk,      // the host's block: [BLK_BITS-1:0], interp_block.vh
     output wire           o_wr,       // the early fields of o_pre are valid (the clock after i_push)
     output wire           o_wr_late,  // the late fields are valid (the clock after o_wr)
-    output wire [8*W+26:0] o_pre      // the prepared block: [PRE_BITS-1:0], interp_block.vh
+    output wire [7*W+20:0] o_pre      // the prepared block: [PRE_BITS-1:0], interp_block.vh
 );
 
 `include "interp_block.vh"
@@ -85,10 +85,8 @@ module blk_prep #(
   // co == to - 1) use inc_terms below, so no adder sits before their
   // comparators.
   wire [W+1:0] ti = {2'b00, ti1s_q};
-  wire [W+1:0] to = {2'b00, to1s_q};
   wire [W+1:0] two = {{W{1'b0}}, 2'b10};
   // Line: ci counts up to ti; arc: down to it.
-  wire [W+1:0] d1 = arc1_q ? {{(W+1){1'b0}}, 1'b1} : {(W+2){1'b1}};
   wire [W+1:0] d2 = arc1_q ? two : {{(W+1){1'b1}}, 1'b0};
 
   // (a + 1) mod 2^(W+1) == b without an adder: a + ~b == -2, checked bit
@@ -115,7 +113,7 @@ module blk_prep #(
 
   reg v2_q;
   reg [W:0] sub2_q;
-  reg [W+1:0] ti1_q, ti2_q, tim1_q, to2_q;
+  reg [W+1:0] ti2_q;
   reg [7:0] flags2_q;                                    // interp_dp F_* order
 
   always @(posedge i_clk) begin
@@ -126,10 +124,7 @@ module blk_prep #(
   always @(posedge i_clk) begin
     if (v1_q) begin
       sub2_q <= arc1_q ? {ci1_q - 1'b1, 1'b1} : {1'b0, to1s_q};
-      ti1_q <= ti + d1;
       ti2_q <= ti + d2;
-      tim1_q <= ti - 1'b1;
-      to2_q <= to - two;
       flags2_q[0] <= (ci1_q == ti1s_q);                    // F_IN_EX
       flags2_q[1] <= (co1_q == to1s_q);                    // F_OUT_EX
       flags2_q[2] <= arc1_q ? &t_in_one : (ti1s_q == 1);   // F_IN_ONE: ci == ti1 (line: 0 == A - 1)
@@ -142,7 +137,8 @@ module blk_prep #(
   end
 
   // -------------------------------------------------------------- output
-  // Early fields (o_wr): stage 1 and ADD, a multiplexer after it.
+  // Early fields (o_wr): stage 1 (the targets ti, to as they are) and ADD,
+  // a multiplexer after it.
   assign o_wr = v1_q;
   assign o_pre[PRE_ARC] = arc1_q;
   assign o_pre[PRE_CW] = cw1_q;
@@ -153,13 +149,12 @@ module blk_prep #(
   assign o_pre[PRE_CI +: W] = ci1_q;
   assign o_pre[PRE_CO +: W] = co1_q;
   assign o_pre[PRE_ADD +: W + 1] = arc1_q ? {co1_q, 1'b1} : {1'b0, ti1s_q};
+  assign o_pre[PRE_TI +: W] = ti1s_q;
+  assign o_pre[PRE_TO +: W] = to1s_q;
   // Late fields (o_wr_late): stage 2.
   assign o_wr_late = v2_q;
   assign o_pre[PRE_SUB +: W + 1] = sub2_q;
-  assign o_pre[PRE_TI1 +: W + 2] = ti1_q;
   assign o_pre[PRE_TI2 +: W + 2] = ti2_q;
-  assign o_pre[PRE_TIM1 +: W + 2] = tim1_q;
-  assign o_pre[PRE_TO2 +: W + 2] = to2_q;
   assign o_pre[PRE_FLAGS +: 8] = flags2_q;
 
 endmodule

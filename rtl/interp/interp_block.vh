@@ -24,14 +24,16 @@ localparam integer BLK_BITS = BLK_YE + W;   // 9 + 4 W
 
 // The prepared block, as blk_prep writes it into the queue and interp_dp
 // loads it (blk_prep -> move_fifo -> interp_dp; meaning: interp_dp.v).
+// Two parts (interp_core queues each apart): the late part, bits
+// [PRE_TI-1:0], from blk_prep's stage 2, the early part, bits
+// [PRE_BITS-1:PRE_TI], from its stage 1.
 localparam integer PRE_FLAGS = 0;                // 8 bits: interp_dp's F_* order
-localparam integer PRE_TO2 = PRE_FLAGS + 8;      // W + 2 bits: to - 2
-localparam integer PRE_TIM1 = PRE_TO2 + W + 2;   // W + 2 bits: ti - 1
-localparam integer PRE_TI2 = PRE_TIM1 + W + 2;   // W + 2 bits: ti + 2 (arc) / ti - 2
-localparam integer PRE_TI1 = PRE_TI2 + W + 2;    // W + 2 bits: ti + 1 (arc) / ti - 1
-localparam integer PRE_ADD = PRE_TI1 + W + 2;    // W + 1 bits: ADD
-localparam integer PRE_SUB = PRE_ADD + W + 1;    // W + 1 bits: SUB
-localparam integer PRE_CO = PRE_SUB + W + 1;     // W bits: outward magnitude
+localparam integer PRE_TI2 = PRE_FLAGS + 8;      // W + 2 bits: ti + 2 (arc) / ti - 2
+localparam integer PRE_SUB = PRE_TI2 + W + 2;    // W + 1 bits: SUB
+localparam integer PRE_TI = PRE_SUB + W + 1;     // W bits: inward target ti (end of the late part)
+localparam integer PRE_TO = PRE_TI + W;          // W bits: outward target to
+localparam integer PRE_ADD = PRE_TO + W;         // W + 1 bits: ADD
+localparam integer PRE_CO = PRE_ADD + W + 1;     // W bits: outward magnitude
 localparam integer PRE_CI = PRE_CO + W;          // W bits: inward magnitude
 localparam integer PRE_K = PRE_CI + W;           // 3 bits: crossings
 localparam integer PRE_Q = PRE_K + 3;            // 2 bits: quadrant
@@ -39,4 +41,4 @@ localparam integer PRE_SYN = PRE_Q + 2;          // line: Y runs negative
 localparam integer PRE_SXN = PRE_SYN + 1;        // line: X runs negative
 localparam integer PRE_CW = PRE_SXN + 1;         // arc: clockwise
 localparam integer PRE_ARC = PRE_CW + 1;         // 1: arc
-localparam integer PRE_BITS = PRE_ARC + 1;       // 8 W + 27
+localparam integer PRE_BITS = PRE_ARC + 1;       // 7 W + 21

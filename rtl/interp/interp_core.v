@@ -55,18 +55,17 @@ module interp_core #(
   );
 
   // The queue, in two parts: blk_prep gives a block's early fields (its
-  // stage 1, and ADD) a clock before the late ones (SUB, the constants,
+  // stage 1, ADD and ti) a clock before the late ones (SUB, the constants,
   // the flags, from its stage 2), and each part has its queue, written
   // when its part comes, so no field waits in a register. Both are popped
   // together; the late queue is never ahead of the early one, so the head
-  // is valid when the late queue's is. A field of the prepared block
-  // belongs to exactly one part (the concatenations below; a field added
-  // to interp_block.vh's PRE_* must be added to one of them, the widths
-  // of `head` and the two parts are checked by lint).
-  localparam integer EW = 2 * W + 9 + W + 1;       // ARC..CI, CO, ADD
-  localparam integer LW = PRE_BITS - EW;           // SUB, TI1, TI2, TIM1, TO2, FLAGS
-  wire [EW-1:0] p_early = {p_pre[PRE_CO +: PRE_BITS - PRE_CO], p_pre[PRE_ADD +: W + 1]};
-  wire [LW-1:0] p_late = {p_pre[PRE_SUB +: W + 1], p_pre[PRE_FLAGS +: PRE_ADD - PRE_FLAGS]};
+  // is valid when the late queue's is. interp_block.vh orders the fields
+  // so that each part is one range of the prepared block: the late part
+  // below PRE_TI, the early part from it.
+  localparam integer EW = PRE_BITS - PRE_TI;       // TI, TO, ADD, CO, CI, K, Q, SYN, SXN, CW, ARC
+  localparam integer LW = PRE_TI;                  // FLAGS, TI2, SUB
+  wire [EW-1:0] p_early = p_pre[PRE_TI +: EW];
+  wire [LW-1:0] p_late = p_pre[0 +: LW];
 
   wire e_valid, l_valid, pop;
   wire [EW-1:0] h_early;
@@ -91,8 +90,7 @@ module interp_core #(
   // The late queue's head valid alone (one LUT input less before the
   // load decision): it implies the early one's (asserted below).
   wire head_valid = l_valid;
-  wire [PRE_BITS-1:0] head = {h_early[EW-1:W+1], h_late[LW-1:PRE_ADD - PRE_FLAGS],
-                              h_early[W:0], h_late[PRE_ADD - PRE_FLAGS - 1:0]};
+  wire [PRE_BITS-1:0] head = {h_early, h_late};
 
   // The level, the blocks in preparation, in the early queue's memory and
   // at its head (fifo_level + p_wr), is a counter: a block counts from the

@@ -15,7 +15,7 @@
 // The end-point rule needs "no distance left" on either axis. Those tests
 // (ci == ti, co == to) and the ones that tell whether the next step ends the
 // move are kept as registered flags, each updated from a comparison of the
-// current registers with a per-move constant (ti1, ti2, tim1, to2), so
+// current registers with a per-move constant (ti, ti2, to), so
 // no wide comparator sits in the D loop. `ifdef FORMAL` asserts that every
 // flag equals the comparison it stands for.
 //
@@ -41,7 +41,7 @@ module interp_dp #(
     // Prepared block (blk_prep), valid/ready handshake.
     input  wire           i_valid,
     output wire           o_ready,       // block is taken in this clock
-    input  wire [8*W+26:0] i_pre,        // [PRE_BITS-1:0], interp_block.vh
+    input  wire [7*W+20:0] i_pre,        // [PRE_BITS-1:0], interp_block.vh
     // Output pulse, registered: valid in the clock after the step, together
     // with the state after it.
     output reg            o_pulse,
@@ -73,16 +73,15 @@ module interp_dp #(
   wire [W-1:0] l_co = i_pre[PRE_CO +: W];
   wire [W:0] l_sub = i_pre[PRE_SUB +: W + 1];
   wire [W:0] l_add = i_pre[PRE_ADD +: W + 1];
-  wire [W+1:0] l_ti1 = i_pre[PRE_TI1 +: W + 2];
+  wire [W-1:0] l_ti = i_pre[PRE_TI +: W];
   wire [W+1:0] l_ti2 = i_pre[PRE_TI2 +: W + 2];
-  wire [W+1:0] l_tim1 = i_pre[PRE_TIM1 +: W + 2];
-  wire [W+1:0] l_to2 = i_pre[PRE_TO2 +: W + 2];
+  wire [W-1:0] l_to = i_pre[PRE_TO +: W];
   wire [7:0] l_flags = i_pre[PRE_FLAGS +: 8];
 
   // Flag bit order of l_flags (blk_prep builds it the same way).
   localparam integer F_IN_EX   = 0;  // ci == ti: inward axis has no distance left
   localparam integer F_OUT_EX  = 1;  // co == to: outward axis has no distance left
-  localparam integer F_IN_ONE  = 2;  // ci == ti1: one inward step left
+  localparam integer F_IN_ONE  = 2;  // ci == ti + 1 (arc) / ti - 1: one inward step left
   localparam integer F_OUT_ONE = 3;  // co == to - 1: one outward step left
   localparam integer F_CI_ONE  = 4;  // ci == 1 (arc): an inward step crosses
   localparam integer F_CO_TI   = 5;  // co == ti (arc): a crossing lands on ti
@@ -105,7 +104,8 @@ module interp_dp #(
   // The resolved D (the observe path and the formal checks only).
   wire [W+1:0]  d_q = {cp_q ? dh1_q : dh_q, dl_q};
   reg [W-1:0]   ci_q, co_q;
-  reg [W+1:0]   ti1_q, ti2_q, tim1_q, to2_q;
+  reg [W-1:0]   ti_q, to_q;        // the inward / outward targets
+  reg [W+1:0]   ti2_q;
   reg           in_ex_q, out_ex_q, in_one_q, out_one_q, ci_one_q, co_ti_q;
   reg           to_z_q, to_one_q;
 
@@ -133,7 +133,7 @@ module interp_dp #(
   // xing_q = ~kz & ci_one, a register of its own (formed with ci_one's
   // next value): it selects wide multiplexers (SUB, ci), so it is one net
   // from a flip-flop, not a LUT after two.
-  reg xing_q;
+  reg xing_q, xing_sub_q, xing_ci_q;
   wire xing = xing_q;
 
   // Would this step end the move? In the end quadrant only when one axis
@@ -204,20 +204,34 @@ module interp_dp #(
   // that crosses has ci = 1, so ci - 1 = 0 and co is ORed in: no crossing
   // multiplexer after the chain either.
   wire [W-1:0] ci_step = ci_q + {{(W-1){arc_q}}, 1'b1};
-  wire [W-1:0] ci_xing = co_q & {W{xing}};
+  wire [W-1:0] ci_xing = co_q & {W{xing_ci_q}};
 
   // Comparisons of the current registers with per-move constants; they
-  // feed only flag registers.
+  // feed only flag registers. The ones with a target one or two off
+  // (co == ti + 1, co == ti - 1: arcs only; co == to - 2) are carry-free
+  // a + 1 == b tests of the target itself (one 4-input term per bit, then
+  // their AND; a + 2 == b: the low bits equal and a + 1 == b above them),
+  // so the block carries ti and to (2W bits) rather than ti + 1, ti - 1
+  // and to - 2 (3W + 6 bits, three adders in blk_prep; issue 15).
+  function automatic [W:0] inc_terms(input [W:0] a, input [W:0] b);
+    integer i;
+    begin
+      inc_terms[0] = a[0] ^ b[0];
+      inc_terms[1] = (a[1] ^ b[1]) == (a[0] | ~b[0]);
+      for (i = 2; i <= W; i = i + 1)
+        inc_terms[i] = (a[i] ^ b[i]) == (a[i-1] & ~b[i-1]);
+    end
+  endfunction
   wire [W+1:0] ci_x = {2'b00, ci_q};
-  wire [W+1:0] co_x = {2'b00, co_q};
   wire c_ci_ti2 = (ci_x == ti2_q);
-  wire c_co_ti1 = (co_x == ti1_q);
-  wire c_co_to2 = (co_x == to2_q);
-  wire c_co_tim1 = (co_x == tim1_q);
+  wire c_co_ti1 = &inc_terms({1'b0, ti_q}, {1'b0, co_q});   // ti + 1 == co
+  wire c_co_to2 = (co_q[0] == to_q[0])                      // co + 2 == to
+                & (&inc_terms({2'b00, co_q[W-1:1]}, {2'b00, to_q[W-1:1]}));
+  wire c_co_tim1 = &inc_terms({1'b0, co_q}, {1'b0, ti_q});  // co + 1 == ti
   wire c_ci_two = (ci_q == 2);
   wire c_co_one = (co_q == 1);
-  // ti == 0 is co == ti right after a crossing (co = 0): ti = tim1 + 1.
-  wire ti_z = (tim1_q == {(W+2){1'b1}});
+  // ti == 0 is co == ti right after a crossing (co = 0).
+  wire ti_z = (ti_q == {W{1'b0}});
 
   // Clock enables, ld | st & e for a step term e, written
   // ld_idle | i_cmd & (ld_last | e): one LUT after the command, beside ld
@@ -265,7 +279,7 @@ module interp_dp #(
   // SUB = 2|c_in| - 1 (arc) / B (line), kept inverted: ~(x - arc) is
   // ~x + arc.
   always @(posedge i_clk) begin
-    if (ce_in) nsub_q[W:1] <= ld ? ~l_sub[W:1] : (xing ? ~add_q[W:1] : nsub_q[W:1]) + {{(W-1){1'b0}}, arc_q};
+    if (ce_in) nsub_q[W:1] <= ld ? ~l_sub[W:1] : (xing_sub_q ? ~add_q[W:1] : nsub_q[W:1]) + {{(W-1){1'b0}}, arc_q};
   end
 
   // Bit 0 of SUB and ADD: a line's constants, 1 throughout an arc (odd
@@ -322,10 +336,9 @@ module interp_dp #(
       cw_q <= l_cw;
       sxn_q <= l_sxn;
       syn_q <= l_syn;
-      ti1_q <= l_ti1;
+      ti_q <= l_ti;
       ti2_q <= l_ti2;
-      tim1_q <= l_tim1;
-      to2_q <= l_to2;
+      to_q <= l_to;
       to_z_q <= l_flags[F_TO_Z];
       to_one_q <= l_flags[F_TO_ONE];
     end
@@ -345,9 +358,22 @@ module interp_dp #(
         in_one_q <= xing ? c_co_ti1 : c_ci_ti2;
         ci_one_q <= arc_q & (xing ? c_co_one : c_ci_two);
       end
-      if (ld) xing_q <= (l_k != 3'd0) & l_flags[F_CI_ONE];
-      else xing_q <= arc_q & (xing ? (k_q != 3'd1) & c_co_one : ~kz & c_ci_two);
     end
+  end
+  // xing_q and its two copies (kept: yosys would merge them), one per
+  // wide multiplexer (SUB's, ci's), so each is a net of ~25 loads
+  // rather than one of ~75 (issue 15: xing_q's routing to SUB's
+  // multiplexer was on a critical path).
+  wire xing_n = ld ? (l_k != 3'd0) & l_flags[F_CI_ONE]
+                   : arc_q & (xing ? (k_q != 3'd1) & c_co_one : ~kz & c_ci_two);
+  always @(posedge i_clk) begin
+    if (ce_in) xing_q <= xing_n;
+  end
+  (* keep *) always @(posedge i_clk) begin
+    if (ce_in) xing_sub_q <= xing_n;
+  end
+  (* keep *) always @(posedge i_clk) begin
+    if (ce_in) xing_ci_q <= xing_n;
   end
 
   // Outward-axis flags: change on outward steps and at crossings; not
@@ -436,7 +462,7 @@ module interp_dp #(
 `ifdef FORMAL
   // ------------------------------------------------------------- formal
   // Reference values the flags stand for, and the exact discriminant.
-  reg [W+1:0] ti_f, to_f;      // targets: ti = ti1 + (arc ? -1 : +1)
+  reg [W+1:0] ti_f, to_f;      // targets
   reg [2*W+3:0] r2_f;          // arc: R^2
   reg [W+3:0] n_f;             // pulses since the load
   reg past_valid_f;
@@ -445,8 +471,8 @@ module interp_dp #(
 
   always @(posedge i_clk) begin
     if (ld) begin
-      ti_f <= l_arc ? l_ti1 - 1'b1 : l_ti1 + 1'b1;
-      to_f <= l_to2 + 2'd2;
+      ti_f <= {2'b00, l_ti};
+      to_f <= {2'b00, l_to};
       r2_f <= {{(W+4){1'b0}}, l_ci} * {{(W+4){1'b0}}, l_ci} + {{(W+4){1'b0}}, l_co} * {{(W+4){1'b0}}, l_co};
       n_f <= {(W+4){1'b0}};
     end else if (st) begin
@@ -480,12 +506,13 @@ module interp_dp #(
       // Flags equal the comparisons they stand for.
       assert(in_ex_q == ({2'b00, ci_q} == ti_f));
       assert(out_ex_q == ({2'b00, co_q} == to_f));
-      assert(in_one_q == ({2'b00, ci_q} == ti1_q));
+      assert(in_one_q == ({2'b00, ci_q} == (arc_q ? ti_f + 1'b1 : ti_f - 1'b1)));
       assert(out_one_q == ({2'b00, co_q} == to_f - 1'b1));
       assert(ti2_q == (arc_q ? ti_f + 2'd2 : ti_f - 2'd2));
-      assert(tim1_q == ti_f - 1'b1);
+      assert({2'b00, ti_q} == ti_f && {2'b00, to_q} == to_f);
       assert(to_z_q == (to_f == 0) && to_one_q == (to_f == 1));
       assert(xing_q == (~kz_q & ci_one_q));
+      assert(xing_sub_q == xing_q && xing_ci_q == xing_q);
       assert(k_q <= 3'd4);
       assert(kz_q == (k_q == 3'd0));
       assert(done_q == (kz_q & in_ex_q & out_ex_q));

@@ -15,8 +15,8 @@
 // counter, loaded with n in the first clock of the interval, is <= 1.
 // That test is a registered flag beside each counter (formed from the value
 // loaded, or from "<= 2" before a count), so no counter's compare sits in
-// the STEP/DIR decisions; a counter stops once its flag is set (only the
-// flag is read, and <= 1 stays <= 1).
+// the STEP/DIR decisions; once its flag is set a counter runs on
+// unread (the flag stays set until the next load).
 `default_nettype none
 
 module step_chan #(
@@ -60,8 +60,9 @@ module step_chan #(
   function automatic le2(input [TW-1:0] v);
     le2 = (v[TW-1:2] == 0) & ~(v[1] & v[0]);
   endfunction
-  wire change_dir = pend_q & ~o_step & (o_dir != want_q) & cnt_ok;
-  wire rise = pend_q & ~o_step & (o_dir == want_q) & space_ok & (~setup_q | cnt_ok);
+  wire dir_eq = (o_dir == want_q);
+  wire change_dir = pend_q & ~o_step & ~dir_eq & cnt_ok;
+  wire rise = pend_q & ~o_step & dir_eq & space_ok & (~setup_q | cnt_ok);
   wire fall = o_step & cnt_ok;
 
   assign o_ready = ~pend_q;
@@ -86,30 +87,36 @@ module step_chan #(
     else if (fall) o_step <= 1'b0;
   end
 
-  // High time left / hold / setup still required.
+  // High time left / hold / setup still required. The three loads are
+  // exclusive (fall needs STEP high; rise and a DIR change need it low
+  // and DIR equal to / different from the wanted one), so the value
+  // loaded is chosen by flip-flops alone (STEP, DIR == wanted), beside the
+  // load decision rather than after it; and the counter runs on once its
+  // flag is set (only the flag is read, and it stays set until a load),
+  // so the count needs no enable: the counter's input is one LUT after
+  // the load decision (issue 15: the priority chain rise / fall / change
+  // / count was five LUTs deep).
+  wire cnt_ld = rise | fall | change_dir;
+  wire [TW-1:0] cnt_val = o_step ? i_hold : dir_eq ? i_len : i_setup;
+  wire cnt_val_le1 = o_step ? i_hold_le1 : dir_eq ? i_len_le1 : i_setup_le1;
   always @(posedge i_clk) begin
     if (i_rst) begin
       cnt_q <= {TW{1'b0}};
       cnt_ok <= 1'b1;
-      setup_q <= 1'b0;
-    end else if (rise) begin
-      cnt_q <= i_len;
-      cnt_ok <= i_len_le1;
-      setup_q <= 1'b0;
-    end else if (fall) begin
-      cnt_q <= i_hold;
-      cnt_ok <= i_hold_le1;
-    end else if (change_dir) begin
-      cnt_q <= i_setup;
-      cnt_ok <= i_setup_le1;
-      setup_q <= 1'b1;
-    end else if (~cnt_ok) begin
+    end else if (cnt_ld) begin
+      cnt_q <= cnt_val;
+      cnt_ok <= cnt_val_le1;
+    end else begin
       cnt_q <= cnt_q - 1'b1;
-      cnt_ok <= le2(cnt_q);
+      cnt_ok <= cnt_ok | le2(cnt_q);
     end
   end
+  always @(posedge i_clk) begin
+    if (i_rst | rise) setup_q <= 1'b0;
+    else if (change_dir) setup_q <= 1'b1;
+  end
 
-  // Low time still required.
+  // Low time still required (runs on once its flag is set, like cnt_q).
   always @(posedge i_clk) begin
     if (i_rst) begin
       spc_q <= {TW{1'b0}};
@@ -117,9 +124,9 @@ module step_chan #(
     end else if (fall) begin
       spc_q <= i_space;
       space_ok <= i_space_le1;
-    end else if (~space_ok) begin
+    end else begin
       spc_q <= spc_q - 1'b1;
-      space_ok <= le2(spc_q);
+      space_ok <= space_ok | le2(spc_q);
     end
   end
 

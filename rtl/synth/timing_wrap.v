@@ -27,9 +27,8 @@ module timing_wrap (
 `ifdef DESIGN_DP
   localparam integer W = 24;
 `include "interp_block.vh"
-  // cmd, valid, the prepared block from bit 2 (up to 28 + 8W), bits
-  // 29 + 8W .. 34 + 8W unused, reset on top.
-  localparam integer NI = 36 + 8 * W;
+  // cmd, valid, the prepared block from bit 2, reset on top.
+  localparam integer NI = 3 + PRE_BITS;
   localparam integer NO = 16 + 3 * W;
 `elsif DESIGN_CORE
   localparam integer W = 24;
