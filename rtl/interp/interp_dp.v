@@ -220,8 +220,15 @@ module interp_dp #(
   wire c_co_to2 = (co_q[0] == to_q[0])                      // co + 2 == to
                 & (&inc_terms({2'b00, co_q[W-1:1]}, {2'b00, to_q[W-1:1]}));
   wire c_co_tim1 = &inc_terms({1'b0, co_q}, {1'b0, ti_q});  // co + 1 == ti
-  wire c_ci_two = (ci_q == 2);
-  wire c_co_one = (co_q == 1);
+  // ci == 2 and co == 1 (arcs: the crossing's approach) from the two low
+  // bits and a registered "small" flag each, one LUT, not a W-bit
+  // comparison: ci_sm_q holds [ci < 4] of ci's value before its last
+  // update, so (arcs, ci counting down by one) ci_sm_q implies ci < 4 and
+  // its negation ci >= 3; likewise co_sm_q, co counting up by one: co <= 4,
+  // or co >= 4. A load or a crossing sets the flag exactly (asserted below).
+  reg ci_sm_q, co_sm_q;
+  wire c_ci_two = ci_sm_q & (ci_x[1:0] == 2'd2);
+  wire c_co_one = co_sm_q & (co_q[1:0] == 2'd1);
   // ti == 0 is co == ti right after a crossing (co = 0).
   wire ti_z = (ti_q == {W{1'b0}});
 
@@ -291,6 +298,17 @@ module interp_dp #(
   // ci: inward-axis magnitude; takes co's value at a crossing.
   always @(posedge i_clk) begin
     if (ce_in) ci_q <= ld ? l_ci : ci_step | ci_xing;
+  end
+
+  // Their "small" flags, updated with ci / co (formed from the values
+  // before the update: a W-4-bit zero test, no multiplexer in front).
+  wire ci_hz = ((ci_q >> 2) == {W{1'b0}});
+  wire co_hz = ((co_q >> 2) == {W{1'b0}});
+  always @(posedge i_clk) begin
+    if (ce_in) ci_sm_q <= ld ? ((l_ci >> 2) == {W{1'b0}}) : xing_ci_q ? co_hz : ci_hz;
+  end
+  always @(posedge i_clk) begin
+    if (ce_out) co_sm_q <= ld ? ((l_co >> 2) == {W{1'b0}}) : inw | co_hz;
   end
 
   // co: outward-axis magnitude; 0 after a crossing.
@@ -505,6 +523,10 @@ module interp_dp #(
       assert(to_z_q == (to_f == 0) && to_one_q == (to_f == 1));
       assert(xing_q == (~kz_q & ci_one_q));
       assert(xing_sub_q == xing_q && xing_ci_q == xing_q);
+      if (arc_q) begin
+        assert(ci_sm_q ? ci_x < 4 : ci_x >= 3);
+        assert(co_sm_q ? co_q <= 4 : co_q >= 4);
+      end
       assert(k_q <= 3'd4);
       assert(kz_q == (k_q == 3'd0));
       assert(done_q == (kz_q & in_ex_q & out_ex_q));

@@ -163,6 +163,7 @@ mutants=(
   "interp_core.v|lines|the queue full one block early|s/(level_q == DEPTH - 1'b1)/(level_q == DEPTH - 2'd2)/"
   "interp_dp.v|arcs|co == ti - 1 tested as ti + 1 == co|s/wire c_co_tim1 = \\&inc_terms({1'b0, co_q}, {1'b0, ti_q});/wire c_co_tim1 = \\&inc_terms({1'b0, ti_q}, {1'b0, co_q});/"
   "interp_dp.v|arcs|ci's copy of xing_q loads without the inward enable|s/if (ce_in) xing_ci_q <= xing_n;/xing_ci_q <= xing_n;/"
+  "interp_dp.v|arcs|co's small flag not set by a crossing (co = 0)|s/: inw | co_hz;/: co_hz;/"
   "interp_dp.v|lines|co == to - 2 tested without bit 0|s/wire c_co_to2 = (co_q\\[0\\] == to_q\\[0\\])/wire c_co_to2 = 1'b1/"
 )
 
