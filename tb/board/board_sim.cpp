@@ -129,14 +129,18 @@ void BoardSim::sample_steps() {
   const auto& top = impl_->top();
   const std::uint8_t step = top.o_step;
   const std::uint8_t rise = static_cast<std::uint8_t>(step & ~last_step_);
+  const std::uint8_t fall = static_cast<std::uint8_t>(last_step_ & ~step);
   last_step_ = step;
+  for (std::size_t a = 0; a < 3; ++a)
+    if ((fall >> a) & 1) steps_[open_[a]].high = impl_->clocks() - steps_[open_[a]].clock;
   if (!rise) return;
   int n = 0;
-  for (int a = 0; a < 3; ++a) {
+  for (std::size_t a = 0; a < 3; ++a) {
     if (!((rise >> a) & 1)) continue;
     ++n;
     const bool neg = (top.o_dir >> a) & 1;
-    steps_.push_back({impl_->clocks(), Pulse{static_cast<Axis>(a), static_cast<std::int8_t>(neg ? -1 : +1)}});
+    open_[a] = steps_.size();
+    steps_.push_back({impl_->clocks(), Pulse{static_cast<Axis>(a), static_cast<std::int8_t>(neg ? -1 : +1)}, 0});
   }
   if (n > 1) ++simultaneous_;
 }

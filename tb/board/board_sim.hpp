@@ -2,8 +2,8 @@
 // UART at the bit level: host bytes are sent as 8N1 characters on the RX
 // pin, the TX pin is decoded by a receiver of its own here (not the RTL's),
 // and every rising edge of a STEP pin is recorded with the DIR pin as a
-// pulse and its clock. On the one harness base (tb/common/harness.hpp:
-// FST on request).
+// pulse and its clock, and its high time once the pin falls. On the one
+// harness base (tb/common/harness.hpp: FST on request).
 //
 // Faults on the wire, for the tests and `contour board-sim`: flip one bit
 // of every Nth character, drop every Mth character (each way), or cut the
@@ -28,6 +28,7 @@ constexpr unsigned kClksPerBit = 12;   // 1 Mbaud (board_top's default)
 struct StepEvent {
   std::uint64_t clock = 0;  // clock of the rising edge
   Pulse pulse;
+  std::uint64_t high = 0;   // clocks the STEP pin stayed high (0: it has not fallen yet)
 };
 
 struct Faults {
@@ -91,6 +92,7 @@ class BoardSim {
   Bytes received_;
   std::vector<StepEvent> steps_;
   std::uint8_t last_step_ = 0;
+  std::array<std::size_t, 3> open_{};  // per axis: the index in steps_ of its pulse while its pin is high
   std::uint64_t simultaneous_ = 0;
 };
 
