@@ -82,19 +82,10 @@ double expect_model_pulses(const Outcome& o, const std::vector<Chord3>& chords) 
 // one whole pulse: a pin left high through the space, or never dropped,
 // fails here.
 void expect_step_timing(const std::vector<StepEvent>& s, std::uint32_t len, std::uint32_t space) {
-  const std::uint64_t high = std::max<std::uint32_t>(len, 1), low = std::max<std::uint32_t>(space, 1);
-  std::array<std::size_t, 3> per_axis{};
   std::size_t bad = 0;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    ++per_axis[static_cast<std::size_t>(s[i].pulse.axis)];
-    std::string what;
-    if (s[i].high != high) what = "high for " + std::to_string(s[i].high) + " clocks (0: never fell)";
-    else if (i > 0 && s[i].clock < s[i - 1].clock + s[i - 1].high + low)
-      what = "rises " + std::to_string(s[i].clock - s[i - 1].clock - s[i - 1].high) + " clocks after the last fell";
-    if (!what.empty() && ++bad <= 5)
-      ADD_FAILURE() << "pulse " << i << " (" << to_string(s[i].pulse) << ", clock " << s[i].clock << "): " << what
-                    << "; STEP_LEN " << high << ", STEP_SPACE " << low;
-  }
+  for (const std::string& f : step_timing_faults(s, len, space, false, bad)) ADD_FAILURE() << f;
+  std::array<std::size_t, 3> per_axis{};
+  for (const StepEvent& e : s) ++per_axis[static_cast<std::size_t>(e.pulse.axis)];
   EXPECT_EQ(bad, 0u) << "pulses of " << s.size() << " (X " << per_axis[0] << ", Y " << per_axis[1] << ", Z "
                      << per_axis[2] << ") off the output stage's timing";
 }

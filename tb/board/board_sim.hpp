@@ -53,6 +53,15 @@ std::array<std::int64_t, 3> pins_net(const std::vector<StepEvent>& steps, std::u
 // position, read on the board at a clock the host does not know exactly).
 bool pins_net_seen(const std::vector<StepEvent>& steps, int a, std::uint64_t c0, std::uint64_t c1, std::int64_t v);
 
+// The pulses off an output stage's timing (at most `most` described, the
+// count of all in `count`): a pulse not high for exactly `len` clocks (0
+// acts as 1; a pin that never fell counts), or rising less than `space`
+// clocks (0 acts as 1) after the last pulse fell: of any axis (AXIS3's
+// STEP_SPACE) or, with `per_axis`, of its own axis (INTERP's).
+std::vector<std::string> step_timing_faults(const std::vector<StepEvent>& steps, std::uint32_t len,
+                                            std::uint32_t space, bool per_axis, std::size_t& count,
+                                            std::size_t most = 5);
+
 class BoardSim {
  public:
   explicit BoardSim(std::string fst_path = "", Faults faults = {});
