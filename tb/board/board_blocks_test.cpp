@@ -13,6 +13,7 @@
 #include <fstream>
 #include <random>
 #include <sstream>
+#include <string>
 
 #include "board_sim.hpp"
 #include "gcode/gcode.hpp"
@@ -66,11 +67,24 @@ std::vector<Pulse> model_pulses(const HwBlock& b) {
   return v;
 }
 
-// The pins give each block's model pulses in turn; returns the pins'
+// interp_top's output stage as INTERP's registers give it (regmap.def,
+// docs/board-regs.md): every STEP pulse of X and Y high for exactly
+// STEP_LEN clocks, at least STEP_SPACE clocks low before the next step of
+// its axis, and ended (its pin fell) when the run is over.
+void expect_step_timing(const std::vector<StepEvent>& s) {
+  std::size_t bad = 0;
+  for (const std::string& f : step_timing_faults(s, StreamConfig{}.step_len, StreamConfig{}.step_space, true, bad))
+    ADD_FAILURE() << f;
+  EXPECT_EQ(bad, 0u) << "pulses of " << s.size() << " off the output stage's timing";
+}
+
+// The pins give each block's model pulses in turn, each a whole pulse of
+// the registers' timing; returns the pins'
 // position (relative to the first) after each block.
 std::vector<std::pair<std::int64_t, std::int64_t>> expect_model_pulses(const Outcome& o, const BlockProgram& p) {
   std::vector<std::pair<std::int64_t, std::int64_t>> ends;
   EXPECT_EQ(o.simultaneous, 0u);
+  expect_step_timing(o.steps);
   std::size_t i = 0;
   std::int64_t x = 0, y = 0;
   for (std::size_t k = 0; k < p.blocks.size(); ++k) {
@@ -353,6 +367,7 @@ TEST(BoardBlocks, HostHoldStopsAlongThePathThenAborts) {
   EXPECT_LT(path_in(s, rest - 4e-3, rest + 1e-9), 0.15 * full);
   sim.run(120000);  // 10 ms more
   EXPECT_EQ(sim.steps().size(), s.size());
+  expect_step_timing(sim.steps());  // every pulse whole
 }
 
 }  // namespace

@@ -5,9 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <random>
+#include <string>
+#include <utility>
 
 #include "board_sim.hpp"
 #include "planner/two_stage.hpp"
@@ -70,10 +73,28 @@ double expect_model_pulses(const Outcome& o, const std::vector<Chord3>& chords) 
   return worst;
 }
 
+// The output stage's timing as AXIS3's registers give it (axis3.def,
+// docs/board-regs.md): every STEP pulse of every axis high for exactly
+// STEP_LEN clocks (0 acts as 1), and at least STEP_SPACE clocks (0 acts as
+// 1) from a STEP falling to the next rising of any axis. Every pulse must
+// have ended (its pin fell) when the run is over. The pulses' count, order
+// and axes are expect_model_pulses'; this checks that each rising edge is
+// one whole pulse: a pin left high through the space, or never dropped,
+// fails here.
+void expect_step_timing(const std::vector<StepEvent>& s, std::uint32_t len, std::uint32_t space) {
+  std::size_t bad = 0;
+  for (const std::string& f : step_timing_faults(s, len, space, false, bad)) ADD_FAILURE() << f;
+  std::array<std::size_t, 3> per_axis{};
+  for (const StepEvent& e : s) ++per_axis[static_cast<std::size_t>(e.pulse.axis)];
+  EXPECT_EQ(bad, 0u) << "pulses of " << s.size() << " (X " << per_axis[0] << ", Y " << per_axis[1] << ", Z "
+                     << per_axis[2] << ") off the output stage's timing";
+}
+
 TEST(BoardChords, RandomChordsGiveTheModelsPulsesOnTime) {
   const auto chords = random_chords(120, 60, 1);
   const Outcome o = run_stream(chords);
   const double worst = expect_model_pulses(o, chords);
+  expect_step_timing(o.steps, StreamConfig{}.step_len, StreamConfig{}.step_space);
   EXPECT_EQ(o.res.underruns, 0u);
   // On the model's time within the output stage's step (1 us high + 1 us
   // low) and a few clocks of latency, once the queue is running.
@@ -86,6 +107,28 @@ TEST(BoardChords, WideChordsGoThroughTheStagedRegisters) {
   cfg.step_len = cfg.step_space = 1;  // up to 3000 steps per 1 ms cycle
   const Outcome o = run_stream(chords, {}, cfg);
   expect_model_pulses(o, chords);
+  expect_step_timing(o.steps, 1, 1);
+}
+
+// Chords of one axis alone (X, Y, Z, each sign), of two, of three, and
+// empty ones, at a STEP_LEN and STEP_SPACE of their own: every axis's
+// pulses are the model's, one rising edge each, and every pulse is
+// STEP_LEN clocks high with STEP_SPACE clocks low before the next step.
+TEST(BoardChords, EveryAxisStepsAloneAndTogetherWithTheRegistersPulseTiming) {
+  std::vector<Chord3> chords{{0, 9, 0},  {0, 0, -9}, {7, 0, 0},  {0, -4, 0}, {0, 0, 5},  {-6, 0, 0},
+                             {0, 0, 0},  {0, 1, 0},  {0, 0, 1},  {3, -2, 0}, {0, 5, -5}, {-4, 0, 6},
+                             {3, -2, 4}, {0, 30, 0}, {0, 0, -30}, {-5, 6, -7}};
+  const auto more = random_chords(20, 25, 3);
+  chords.insert(chords.end(), more.begin(), more.end());
+  for (const auto& [len, space] : {std::pair<std::uint32_t, std::uint32_t>{7, 4}, {3, 10}, {0, 0}}) {
+    SCOPED_TRACE("STEP_LEN " + std::to_string(len) + ", STEP_SPACE " + std::to_string(space));
+    StreamConfig cfg;
+    cfg.step_len = len;
+    cfg.step_space = space;
+    const Outcome o = run_stream(chords, {}, cfg);
+    expect_model_pulses(o, chords);
+    expect_step_timing(o.steps, len, space);
+  }
 }
 
 TEST(BoardChords, AChordBeyondTheBoardsWidthIsRefusedBeforeAnyMoves) {
@@ -151,6 +194,7 @@ TEST(BoardChords, WatchdogStopsAlongThePathAndResumes) {
   const Outcome o = run_stream(chords, f);
   expect_model_pulses(o, chords);
   EXPECT_GE(o.res.wdog_trips, 1u);
+  expect_step_timing(o.steps, StreamConfig{}.step_len, StreamConfig{}.step_space);  // every pulse whole
   // The stop: the longest gap between steps is where the motion stood still.
   const std::size_t g = after_longest_gap(o.steps);
   const double stop = static_cast<double>(o.steps[g - 1].clock) / kClockHz;
@@ -202,6 +246,7 @@ TEST(BoardChords, AStopRequestHoldsThenStopsAtRestWithAPrefixOfThePulses) {
   const std::size_t n = s.size();
   sim.run(120000);
   EXPECT_EQ(sim.steps().size(), n);
+  expect_step_timing(sim.steps(), StreamConfig{}.step_len, StreamConfig{}.step_space);  // every pulse whole
 }
 
 }  // namespace

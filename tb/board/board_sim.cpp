@@ -30,6 +30,32 @@ bool pins_net_seen(const std::vector<StepEvent>& steps, int a, std::uint64_t c0,
   return false;
 }
 
+std::vector<std::string> step_timing_faults(const std::vector<StepEvent>& steps, std::uint32_t len,
+                                            std::uint32_t space, bool per_axis, std::size_t& count, std::size_t most) {
+  const std::uint64_t high = len == 0 ? 1 : len, low = space == 0 ? 1 : space;
+  std::vector<std::string> out;
+  count = 0;
+  std::array<const StepEvent*, 3> last_of{};  // per axis
+  const StepEvent* last = nullptr;            // any axis
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const StepEvent& e = steps[i];
+    const auto a = static_cast<std::size_t>(e.pulse.axis);
+    const StepEvent* before = per_axis ? last_of[a] : last;
+    std::string what;
+    if (e.high != high)
+      what = "high for " + std::to_string(e.high) + " clocks (0: never fell)";
+    else if (before != nullptr && e.clock < before->clock + before->high + low)
+      what = "rises " + std::to_string(static_cast<std::int64_t>(e.clock - before->clock - before->high)) +
+             " clocks after the last pulse" + (per_axis ? " of its axis" : "") + " fell";
+    if (!what.empty() && ++count <= most)
+      out.push_back("pulse " + std::to_string(i) + " (" + to_string(e.pulse) + ", clock " + std::to_string(e.clock) +
+                    "): " + what + "; STEP_LEN " + std::to_string(high) + ", STEP_SPACE " + std::to_string(low));
+    last_of[a] = &e;
+    last = &e;
+  }
+  return out;
+}
+
 BoardSim::BoardSim(std::string fst_path, Faults faults)
     : impl_(std::make_unique<Impl>(std::move(fst_path))), faults_(faults) {
   impl_->top().i_rx = 1;
@@ -129,14 +155,18 @@ void BoardSim::sample_steps() {
   const auto& top = impl_->top();
   const std::uint8_t step = top.o_step;
   const std::uint8_t rise = static_cast<std::uint8_t>(step & ~last_step_);
+  const std::uint8_t fall = static_cast<std::uint8_t>(last_step_ & ~step);
   last_step_ = step;
+  for (std::size_t a = 0; a < 3; ++a)
+    if ((fall >> a) & 1) steps_[open_[a]].high = impl_->clocks() - steps_[open_[a]].clock;
   if (!rise) return;
   int n = 0;
-  for (int a = 0; a < 3; ++a) {
+  for (std::size_t a = 0; a < 3; ++a) {
     if (!((rise >> a) & 1)) continue;
     ++n;
     const bool neg = (top.o_dir >> a) & 1;
-    steps_.push_back({impl_->clocks(), Pulse{static_cast<Axis>(a), static_cast<std::int8_t>(neg ? -1 : +1)}});
+    open_[a] = steps_.size();
+    steps_.push_back({impl_->clocks(), Pulse{static_cast<Axis>(a), static_cast<std::int8_t>(neg ? -1 : +1)}, 0});
   }
   if (n > 1) ++simultaneous_;
 }

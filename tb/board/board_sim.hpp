@@ -2,8 +2,8 @@
 // UART at the bit level: host bytes are sent as 8N1 characters on the RX
 // pin, the TX pin is decoded by a receiver of its own here (not the RTL's),
 // and every rising edge of a STEP pin is recorded with the DIR pin as a
-// pulse and its clock. On the one harness base (tb/common/harness.hpp:
-// FST on request).
+// pulse and its clock, and its high time once the pin falls. On the one
+// harness base (tb/common/harness.hpp: FST on request).
 //
 // Faults on the wire, for the tests and `contour board-sim`: flip one bit
 // of every Nth character, drop every Mth character (each way), or cut the
@@ -28,6 +28,7 @@ constexpr unsigned kClksPerBit = 12;   // 1 Mbaud (board_top's default)
 struct StepEvent {
   std::uint64_t clock = 0;  // clock of the rising edge
   Pulse pulse;
+  std::uint64_t high = 0;   // clocks the STEP pin stayed high (0: it has not fallen yet)
 };
 
 struct Faults {
@@ -51,6 +52,15 @@ std::array<std::int64_t, 3> pins_net(const std::vector<StepEvent>& steps, std::u
 // Whether axis `a`'s net equals `v` at some clock in [c0, c1] (a reply's
 // position, read on the board at a clock the host does not know exactly).
 bool pins_net_seen(const std::vector<StepEvent>& steps, int a, std::uint64_t c0, std::uint64_t c1, std::int64_t v);
+
+// The pulses off an output stage's timing (at most `most` described, the
+// count of all in `count`): a pulse not high for exactly `len` clocks (0
+// acts as 1; a pin that never fell counts), or rising less than `space`
+// clocks (0 acts as 1) after the last pulse fell: of any axis (AXIS3's
+// STEP_SPACE) or, with `per_axis`, of its own axis (INTERP's).
+std::vector<std::string> step_timing_faults(const std::vector<StepEvent>& steps, std::uint32_t len,
+                                            std::uint32_t space, bool per_axis, std::size_t& count,
+                                            std::size_t most = 5);
 
 class BoardSim {
  public:
@@ -91,6 +101,7 @@ class BoardSim {
   Bytes received_;
   std::vector<StepEvent> steps_;
   std::uint8_t last_step_ = 0;
+  std::array<std::size_t, 3> open_{};  // per axis: the index in steps_ of its pulse while its pin is high
   std::uint64_t simultaneous_ = 0;
 };
 
