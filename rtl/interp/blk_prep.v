@@ -13,10 +13,13 @@
 // a stage it does not need.
 // A block may be pushed in every clock.
 //
-// Line: XE, YE are |Xe|, |Ye|; SXN, SYN their signs; XS, YS, Q, K unused.
-// Arc: |xs|, |ys|, |xe|, |ye| relative to the centre, Q = start quadrant,
-// K = quadrant crossings (0..4). The host validates the arc (the hardware
-// has no multiplier); an invalid block gives undefined pulses.
+// Line: TI, TO are |Xe|, |Ye|; SXN, SYN their signs; CI, CO, Q, K unused.
+// Arc: the magnitudes relative to the centre in inward/outward order (the
+// host's choice, contour::inout_order in model/interp/hw_order.hpp):
+// CI, CO the start's on the start quadrant's inward and outward axes, TI,
+// TO the end's on the end quadrant's; Q = start quadrant, K = quadrant
+// crossings (0..4). The host validates the arc (the hardware has no
+// multiplier); an invalid block gives undefined pulses.
 `default_nettype none
 
 module blk_prep #(
@@ -40,16 +43,12 @@ module blk_prep #(
   wire syn = i_blk[BLK_SYN];
   wire [1:0] q = i_blk[BLK_Q +: 2];
   wire [2:0] k = i_blk[BLK_K +: 3];
-  wire [W-1:0] xs = i_blk[BLK_XS +: W];
-  wire [W-1:0] ys = i_blk[BLK_YS +: W];
-  wire [W-1:0] xe = i_blk[BLK_XE +: W];
-  wire [W-1:0] ye = i_blk[BLK_YE +: W];
+  wire [W-1:0] h_ci = i_blk[BLK_CI +: W];
+  wire [W-1:0] h_co = i_blk[BLK_CO +: W];
+  wire [W-1:0] h_ti = i_blk[BLK_TI +: W];
+  wire [W-1:0] h_to = i_blk[BLK_TO +: W];
 
   // ------------------------------------------------------------- stage 1
-  // Inward axis in the start quadrant and in the end quadrant (K crossings
-  // away, so its parity differs by K[0]).
-  wire in_x0 = ~q[0] ^ cw;
-  wire in_xe = in_x0 ^ k[0];
 
   reg v1_q;
   reg arc1_q, cw1_q, sxn1_q, syn1_q;
@@ -71,10 +70,10 @@ module blk_prep #(
       syn1_q <= syn & ~arc;
       q1_q <= arc ? q : 2'd0;
       k1_q <= arc ? k : 3'd0;
-      ci1_q <= arc ? (in_x0 ? xs : ys) : {W{1'b0}};
-      co1_q <= arc ? (in_x0 ? ys : xs) : {W{1'b0}};
-      ti1s_q <= arc ? (in_xe ? xe : ye) : xe;
-      to1s_q <= arc ? (in_xe ? ye : xe) : ye;
+      ci1_q <= arc ? h_ci : {W{1'b0}};
+      co1_q <= arc ? h_co : {W{1'b0}};
+      ti1s_q <= h_ti;
+      to1s_q <= h_to;
     end
   end
 

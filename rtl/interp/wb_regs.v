@@ -94,8 +94,8 @@ module wb_regs #(
   localparam integer S_FEED = 0, S_LEN = 1, S_SPACE = 2, S_SETUP = 3, S_HOLD = 4, S_MODE = 5,
       S_XS = 6, S_YS = 7, S_XE = 8, S_YE = 9, S_PUSH = 10, S_WCTRL = 11, NWS = 12;
   wire [NWS-1:0] wsel = {NWS{wr1_q}} &
-      {wadr == A_CTRL, wadr == A_PUSH, wadr == A_BLK_YE, wadr == A_BLK_XE,
-       wadr == A_BLK_YS, wadr == A_BLK_XS, wadr == A_BLK_MODE, wadr == A_DIR_HOLD,
+      {wadr == A_CTRL, wadr == A_PUSH, wadr == A_BLK_TO, wadr == A_BLK_TI,
+       wadr == A_BLK_CO, wadr == A_BLK_CI, wadr == A_BLK_MODE, wadr == A_DIR_HOLD,
        wadr == A_DIR_SETUP, wadr == A_STEP_SPACE, wadr == A_STEP_LEN, wadr == A_FEED};
 
   reg [8:0] mode_q;
@@ -108,10 +108,10 @@ module wb_regs #(
   assign o_blk[BLK_SYN] = mode_q[BLK_MODE_SYN];
   assign o_blk[BLK_Q +: 2] = mode_q[BLK_MODE_Q +: 2];
   assign o_blk[BLK_K +: 3] = mode_q[BLK_MODE_K +: 3];
-  assign o_blk[BLK_XS +: W] = xs_q;
-  assign o_blk[BLK_YS +: W] = ys_q;
-  assign o_blk[BLK_XE +: W] = xe_q;
-  assign o_blk[BLK_YE +: W] = ye_q;
+  assign o_blk[BLK_CI +: W] = xs_q;
+  assign o_blk[BLK_CO +: W] = ys_q;
+  assign o_blk[BLK_TI +: W] = xe_q;
+  assign o_blk[BLK_TO +: W] = ye_q;
 
   // Writable registers.
   always @(posedge i_clk) begin
@@ -123,10 +123,10 @@ module wb_regs #(
       o_setup <= R_DIR_SETUP[TW-1:0];
       o_hold <= R_DIR_HOLD[TW-1:0];
       mode_q <= R_BLK_MODE[8:0];
-      xs_q <= R_BLK_XS[W-1:0];
-      ys_q <= R_BLK_YS[W-1:0];
-      xe_q <= R_BLK_XE[W-1:0];
-      ye_q <= R_BLK_YE[W-1:0];
+      xs_q <= R_BLK_CI[W-1:0];
+      ys_q <= R_BLK_CO[W-1:0];
+      xe_q <= R_BLK_TI[W-1:0];
+      ye_q <= R_BLK_TO[W-1:0];
     end else begin
       if (wsel[S_WCTRL]) o_src <= i_wb_dat[CTRL_SRC +: 2];
       if (wsel[S_FEED]) o_feed <= i_wb_dat;
@@ -252,7 +252,7 @@ module wb_regs #(
         assert (f_past2 && $past(f_start & i_wb_we & (adr == A_FEED), 2));
       if (f_past2 && !$past(i_rst, 2) && $past(f_start & i_wb_we & (adr == A_FEED), 2))
         assert (o_feed == $past(i_wb_dat, 2));
-      if (xs_q != $past(xs_q)) assert (f_past2 && $past(f_start & i_wb_we & (adr == A_BLK_XS), 2));
+      if (xs_q != $past(xs_q)) assert (f_past2 && $past(f_start & i_wb_we & (adr == A_BLK_CI), 2));
       if (o_src != $past(o_src)) assert (f_past2 && $past(f_start & i_wb_we & (adr == A_CTRL), 2));
       // A PUSH write pushes once, unless the queue is full in the clock
       // after it starts (then REJECT is set instead).

@@ -170,10 +170,10 @@ class TopHarness : public tb::Harness<Vinterp_top> {
                                (std::uint32_t(b.q) << INTERP_BLK_MODE_Q_LSB) |
                                (std::uint32_t(b.k) << INTERP_BLK_MODE_K_LSB);
     write(INTERP_REG_BLK_MODE, mode);
-    write(INTERP_REG_BLK_XS, std::uint32_t(b.xs));
-    write(INTERP_REG_BLK_YS, std::uint32_t(b.ys));
-    write(INTERP_REG_BLK_XE, std::uint32_t(b.xe));
-    write(INTERP_REG_BLK_YE, std::uint32_t(b.ye));
+    write(INTERP_REG_BLK_CI, std::uint32_t(b.ci));
+    write(INTERP_REG_BLK_CO, std::uint32_t(b.co));
+    write(INTERP_REG_BLK_TI, std::uint32_t(b.ti));
+    write(INTERP_REG_BLK_TO, std::uint32_t(b.to));
     write(INTERP_REG_PUSH, 1);
   }
 
@@ -295,8 +295,8 @@ TEST(InterpTop, RegistersReadAndWrite) {
   // whatever was written (what a write does is checked by the moves, the
   // timing monitor and the feed rates of the tests below).
   for (std::uint32_t adr : {INTERP_REG_FEED, INTERP_REG_STEP_LEN, INTERP_REG_STEP_SPACE, INTERP_REG_DIR_SETUP,
-                            INTERP_REG_DIR_HOLD, INTERP_REG_BLK_MODE, INTERP_REG_BLK_XS, INTERP_REG_BLK_YS,
-                            INTERP_REG_BLK_XE, INTERP_REG_BLK_YE, INTERP_REG_PUSH}) {
+                            INTERP_REG_DIR_HOLD, INTERP_REG_BLK_MODE, INTERP_REG_BLK_CI, INTERP_REG_BLK_CO,
+                            INTERP_REG_BLK_TI, INTERP_REG_BLK_TO, INTERP_REG_PUSH}) {
     EXPECT_EQ(h.read(adr), 0u) << "register 0x" << std::hex << adr << " after reset";
     if (adr != INTERP_REG_PUSH) h.write(adr, 0xFFFFFFFFu);
     EXPECT_EQ(h.read(adr), 0u) << "register 0x" << std::hex << adr;
@@ -339,10 +339,10 @@ TEST(InterpTop, BackToBackAccessesHoldingTheStrobe) {
       {INTERP_REG_CTRL, true, 0},
       {INTERP_REG_CTRL, false, 0},
       {INTERP_REG_BLK_MODE, true, mode},
-      {INTERP_REG_BLK_XS, true, std::uint32_t(b.xs)},
-      {INTERP_REG_BLK_YS, true, std::uint32_t(b.ys)},
-      {INTERP_REG_BLK_XE, true, std::uint32_t(b.xe)},
-      {INTERP_REG_BLK_YE, true, std::uint32_t(b.ye)},
+      {INTERP_REG_BLK_CI, true, std::uint32_t(b.ci)},
+      {INTERP_REG_BLK_CO, true, std::uint32_t(b.co)},
+      {INTERP_REG_BLK_TI, true, std::uint32_t(b.ti)},
+      {INTERP_REG_BLK_TO, true, std::uint32_t(b.to)},
       {INTERP_REG_PUSH, true, 1},
       {INTERP_REG_PUSH, true, 1},
       {INTERP_REG_MOVES, false, 0},

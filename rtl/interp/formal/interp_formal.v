@@ -135,7 +135,9 @@ module interp_formal #(
   wire [2:0] level;
 
   // The block as the host writes it: kind, sense, signs, start quadrant,
-  // crossings, magnitudes.
+  // crossings, magnitudes (arc: in inward/outward order, the start's by
+  // the start quadrant, the end's by the end quadrant; line: |xe|, |ye|).
+  wire in_x_s = ~qs[0] ^ f_cw;
   wire [BLK_BITS-1:0] blk;
   assign blk[BLK_ARC] = f_arc;
   assign blk[BLK_CW] = f_cw;
@@ -143,10 +145,10 @@ module interp_formal #(
   assign blk[BLK_SYN] = (f_ye < 0);
   assign blk[BLK_Q +: 2] = qs;
   assign blk[BLK_K +: 3] = k_start;
-  assign blk[BLK_XS +: W] = axs[W-1:0];
-  assign blk[BLK_YS +: W] = ays[W-1:0];
-  assign blk[BLK_XE +: W] = axe[W-1:0];
-  assign blk[BLK_YE +: W] = aye[W-1:0];
+  assign blk[BLK_CI +: W] = in_x_s ? axs[W-1:0] : ays[W-1:0];
+  assign blk[BLK_CO +: W] = in_x_s ? ays[W-1:0] : axs[W-1:0];
+  assign blk[BLK_TI +: W] = (f_arc && !in_x_e) ? aye[W-1:0] : axe[W-1:0];
+  assign blk[BLK_TO +: W] = (f_arc && !in_x_e) ? axe[W-1:0] : aye[W-1:0];
 
   interp_core #(.W(W), .QAW(1)) dut (
       .i_clk(i_clk), .i_rst(rst), .i_abort(1'b0), .i_cmd(cmd),

@@ -153,7 +153,7 @@ mutants=(
   "interp_dp.v|arcs|crossing leaves k unchanged|s/k_q <= k_q - 1'b1;/k_q <= k_q;/"
   "interp_dp.v|arcs|end-point rule compares co with to - 1|s/wire inw = kz ? (d_pos ? ~in_ex_q : out_ex_q) : d_pos;/wire inw = kz ? (d_pos ? ~in_ex_q : out_one_q) : d_pos;/"
   "interp_dp.v|lines|D's high half drops the low half's pending carry|s/wire \[DH-1:0\] cpx = {{(DH-1){1'b0}}, cp_q};/wire [DH-1:0] cpx = {DH{1'b0}};/"
-  "blk_prep.v|arcs|end quadrant's inward axis ignores the parity of k|s/wire in_xe = in_x0 ^ k\[0\];/wire in_xe = in_x0;/"
+  "blk_prep.v|lines|a line's inward start not zeroed|s/ci1_q <= arc ? h_ci : {W{1'b0}};/ci1_q <= h_ci;/"
   "blk_prep.v|lines|line flag 'no X distance left' from the Y target|s/flags2_q\[0\] <= (ci1_q == ti1s_q);/flags2_q[0] <= (ci1_q == to1s_q);/"
   "interp_core.v|lines|the queue level ignores a pop|s/level_q <= pop ? level_q - 1'b1 : level_q + 1'b1;/level_q <= pop ? level_q : level_q + 1'b1;/"
   "interp_core.v|lines|the queue full one block early|s/(level_q == DEPTH - 1'b1)/(level_q == DEPTH - 2'd2)/"
