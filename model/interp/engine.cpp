@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace contour {
 
@@ -27,6 +28,14 @@ double max_deviation(const Move& m, const RunResult& r) {
   double worst = deviation(m, r.initial_state.x, r.initial_state.y);
   for (const auto& s : r.steps) worst = std::max(worst, deviation(m, s.state.x, s.state.y));
   return worst;
+}
+
+Move walked_arc(std::int64_t xs, std::int64_t ys, Sense s, int n) {
+  Circular<24> walk(xs, ys, xs, ys, s);
+  for (int i = 0; i < n; ++i) walk.step();
+  auto near = [](const State& st) { return std::llabs(st.d) <= std::llabs(st.x) + std::llabs(st.y); };
+  while (!near(walk.state())) walk.step();
+  return Move::arc(xs, ys, walk.state().x, walk.state().y, s);
 }
 
 }  // namespace contour

@@ -110,4 +110,9 @@ double deviation(const Move& m, std::int64_t x, std::int64_t y);
 // The largest deviation over a run, start point included.
 double max_deviation(const Move& m, const RunResult& r);
 
+// An arc over about n pulses of the circle through (xs, ys), ending at an
+// accepted end point: the walk's position once |D| <= |x| + |y| after n
+// pulses (long 24-bit arcs for tables and tests without a multiplier).
+Move walked_arc(std::int64_t xs, std::int64_t ys, Sense s, int n);
+
 }  // namespace contour

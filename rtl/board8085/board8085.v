@@ -102,6 +102,7 @@ module board8085 #(
       .ROM_FILE(ROM_FILE)
   ) u_rom (
       .i_clk (i_clk),
+      .i_re  (rd),
       .i_addr(addr[12:0]),
       .o_data(rom_q)
   );
@@ -113,6 +114,7 @@ module board8085 #(
       .i_we   (mem_wr && sel_ram),
       .i_waddr(addr[10:0]),
       .i_wdata(dout),
+      .i_re   (rd),
       .i_raddr(addr[10:0]),
       .o_rdata(ram_q)
   );
@@ -121,6 +123,7 @@ module board8085 #(
       .i_clk       (i_clk),
       .i_rst       (i_rst),
       .i_cpu_we    (mem_wr && sel_mbx),
+      .i_cpu_re    (rd),
       .i_cpu_addr  (addr[7:0]),
       .i_cpu_wdata (dout),
       .o_cpu_rdata (mbx_q),

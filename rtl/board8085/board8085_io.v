@@ -60,9 +60,9 @@ module board8085_io (
     if (i_rst) begin
       cmd_prev_q <= 1'b0;
       cmd_count_q <= 8'h00;
-    end else begin
+    end else if (i_cmd != cmd_prev_q) begin  // the pin changes
       cmd_prev_q <= i_cmd;
-      if (i_cmd && !cmd_prev_q) cmd_count_q <= cmd_count_q + 8'd1;
+      if (i_cmd) cmd_count_q <= cmd_count_q + 8'd1;
     end
   end
 

@@ -15,6 +15,7 @@ module board8085_mailbox (
     input  wire       i_rst,
     // CPU side
     input  wire       i_cpu_we,
+    input  wire       i_cpu_re,    // the CPU reads (o_cpu_rdata at the next clock)
     input  wire [7:0] i_cpu_addr, i_cpu_wdata,
     output wire [7:0] o_cpu_rdata,
     // host side
@@ -62,6 +63,7 @@ module board8085_mailbox (
       .i_we   (we),
       .i_waddr(waddr),
       .i_wdata(wdata),
+      .i_re   (i_cpu_re),
       .i_raddr(i_cpu_addr),
       .o_rdata(o_cpu_rdata)
   );
@@ -73,6 +75,7 @@ module board8085_mailbox (
       .i_we   (we),
       .i_waddr(waddr),
       .i_wdata(wdata),
+      .i_re   (1'b1),
       .i_raddr(i_host_addr),
       .o_rdata(o_host_rdata)
   );

@@ -1,6 +1,7 @@
 `default_nettype none
 // board8085_ram: a synchronous RAM of 2**AW bytes with one read and one
-// write port (an iCE40 block RAM): the board's program RAM and each copy of
+// write port (an iCE40 block RAM; the read under an enable: a Verilated
+// model reads only then): the board's program RAM and each copy of
 // the mailbox. The read shows the contents before a write at the same edge.
 module board8085_ram #(
     parameter AW = 11  // address width: 11 = 2 KiB
@@ -9,6 +10,7 @@ module board8085_ram #(
     input  wire          i_we,
     input  wire [AW-1:0] i_waddr,
     input  wire [   7:0] i_wdata,
+    input  wire          i_re,     // read enable: o_rdata <= mem[i_raddr]
     input  wire [AW-1:0] i_raddr,
     output reg  [   7:0] o_rdata
 );
@@ -21,7 +23,7 @@ module board8085_ram #(
 
   always @(posedge i_clk) begin
     if (i_we) mem[i_waddr] <= i_wdata;
-    o_rdata <= mem[i_raddr];
+    if (i_re) o_rdata <= mem[i_raddr];
   end
 endmodule
 

@@ -10,8 +10,9 @@ module board8085_rom #(
     parameter ROM_FILE = ""  // $readmemh file for synthesis ("" = erased)
 ) (
     input  wire        i_clk,
+    input  wire        i_re,    // read enable
     input  wire [12:0] i_addr,
-    output reg  [ 7:0] o_data  // mem[i_addr] of the previous clock edge
+    output reg  [ 7:0] o_data  // mem[i_addr] at the last clock edge with i_re
 );
   reg [7:0] mem[0:8191];
 
@@ -28,7 +29,7 @@ module board8085_rom #(
     if (ROM_FILE != "") $readmemh(ROM_FILE, mem);
   end
 
-  always @(posedge i_clk) o_data <= mem[i_addr];
+  always @(posedge i_clk) if (i_re) o_data <= mem[i_addr];
 endmodule
 
 `default_nettype wire

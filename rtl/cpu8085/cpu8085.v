@@ -130,9 +130,9 @@ module cpu8085 (
   // wire read in several places at every clock, a use inside a clocked
   // block's rare branch only when that branch runs.
 
-  wire [2:0] ddd = o_dbg_op[5:3];
-  wire [2:0] sss = o_dbg_op[2:0];
-  wire [1:0] rp = o_dbg_op[5:4];
+  // The opcode's fields DDD (o_dbg_op[5:3]), SSS ([2:0]) and RP ([5:4])
+  // are written out at their uses too (the block that reads them writes
+  // the instruction register).
 
   // ------------------------------------------------- interrupt decision
   // Taken at a unit's first T-state only (the ISS's sampling point): these
@@ -174,26 +174,11 @@ module cpu8085 (
   // the sequencer, not the datapath (a shorter critical path).
 
   // ------------------------------------------------------------ decode
-  // The opcode decoded into one-hot classes (cpu8085_decode.vh), registered
-  // with the instruction register: once per instruction.
+  // The opcode decoded into its class (cpu8085_decode.vh), registered with
+  // the instruction register, once per instruction, as a number: the
+  // sequencer and the work dispatch on it by one case each.
 `include "cpu8085_decode.vh"
-  reg [39:0] cls_q;  // decode()'s classes, in its order
-  wire is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i;
-  wire is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc;
-  wire is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct;
-  wire is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp;
-  wire is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei;
-  wire is_ccc, is_call, is_push, is_rst;
-  // Classes that share their cycle list.
-  wire is_mem_rmw;  // MVI M, INR / DCR M: MR (or operand) then MW (HL)
-  wire is_pop_ret;  // Rcc RET POP: two reads at SP
-  assign {is_hlt, is_mov_rr, is_mov_mr, is_mov_rm, is_alu_r, is_alu_m, is_alu_i,
-          is_mvi_r, is_mvi_m, is_incdec_r, is_incdec_m, is_acc,
-          is_lxi, is_dad, is_inx, is_dcx, is_stax, is_ldax, is_direct,
-          is_rim, is_sim, is_rcc, is_ret, is_pop, is_jcc, is_jmp,
-          is_out, is_in, is_xthl, is_xchg, is_pchl, is_sphl, is_di, is_ei,
-          is_ccc, is_call, is_push, is_rst,
-          is_mem_rmw, is_pop_ret} = cls_q;
+  reg [ 5:0] cix_q;  // the class as a number (C_*): class_of(decode(opcode))
 
   // Conditions NZ Z NC C PO PE P M of the opcode's bits 5:3 on the flags
   // S Z P CY (F's bits 7 6 2 0).
@@ -224,83 +209,61 @@ module cpu8085 (
 
   // ------------------------------------------------ machine cycle sequence
   // The cycle after the opcode fetch, cycle index mc = 1..4, of the current
-  // unit: its type (seq_cyc), address (seq_asel) and write data (seq_dsel)
-  // sources, and whether it is the unit's last cycle (seq_last); the data
-  // sheet's cycle list of each class. The sequencer registers them when the
-  // cycle starts (o_cycle, asel_q, dsel_q, last_q): they are computed once
-  // per cycle, not at every clock. Each function assigns its default
-  // first; the class flags are one-hot, so at most one of the `if`s after
-  // it applies and their order is immaterial.
+  // unit: its type, address and write data sources, and whether it is the
+  // unit's last cycle; the data sheet's cycle list of each class, one case
+  // on the class index. The sequencer registers them when the cycle starts
+  // (o_cycle, asel_q, dsel_q, last_q): they are computed once per cycle,
+  // not at every clock.
   // Write data sources.
   localparam [3:0] D_A = 4'd0, D_SSS = 4'd1, D_Z = 4'd2, D_L = 4'd3, D_H = 4'd4;
   localparam [3:0] D_PCH = 4'd5, D_PCL = 4'd6, D_PUSH_HI = 4'd7, D_PUSH_LO = 4'd8;
 
-  // Address source.
-  function [2:0] seq_asel;
+  // {cycle type, address source, write data source, last}. Jcc / Ccc end
+  // after their first operand byte when the condition fails; an INTR
+  // acknowledge reads its operand bytes by INTA cycles.
+  function [10:0] seq_next;
     input [2:0] mc;
-    begin
-      seq_asel = A_PC;
-      if (is_mov_mr | is_mov_rm | is_alu_m) seq_asel = A_HL;
-      if (is_mem_rmw) seq_asel = (is_mvi_m && mc == 3'd1) ? A_PC : A_HL;
-      if (is_stax | is_ldax) seq_asel = o_dbg_op[4] ? A_DE : A_BC;
-      if (is_direct) seq_asel = (mc <= 3'd2) ? A_PC : A_WZ;
-      if (is_pop_ret | is_push | is_rst) seq_asel = A_SP;
-      if (is_out | is_in) seq_asel = (mc == 3'd1) ? A_PC : A_ZZ;
-      if (is_xthl) seq_asel = (mc == 3'd1 || mc == 3'd4) ? A_SP : A_SP1;  // H to SP+1 first
-      if (is_ccc | is_call) seq_asel = (mc <= 3'd2) ? A_PC : A_SP;
-    end
-  endfunction
-
-  // Cycle type, given the cycle's address source asel (seq_asel(mc)). An
-  // INTR acknowledge reads its operand bytes by INTA cycles.
-  function [2:0] seq_cyc;
-    input [2:0] mc;
-    input [2:0] asel;
-    reg at_1, at_le2;
-    begin
-      at_1 = (mc == 3'd1);
-      at_le2 = (mc <= 3'd2);
-      seq_cyc = CY_MR;
-      if (is_hlt) seq_cyc = CY_HLT;  // its fifth T-state
-      if (is_mov_mr | is_stax | is_push | is_rst) seq_cyc = CY_MW;
-      if (is_mem_rmw) seq_cyc = at_1 ? CY_MR : CY_MW;
-      if (is_dad) seq_cyc = CY_BI;  // two bus idle cycles
-      if (is_direct) seq_cyc = (at_le2 || o_dbg_op[3]) ? CY_MR : CY_MW;
-      if (is_out | is_in) seq_cyc = at_1 ? CY_MR : (is_in ? CY_IOR : CY_IOW);
-      if (is_xthl | (is_ccc | is_call)) seq_cyc = at_le2 ? CY_MR : CY_MW;
-      if (o_dbg_kind == K_INTR && seq_cyc == CY_MR && asel == A_PC) seq_cyc = CY_INA;
-    end
-  endfunction
-
-  // Write data source.
-  function [3:0] seq_dsel;
-    input [2:0] mc;
-    begin
-      seq_dsel = D_A;
-      if (is_mov_mr) seq_dsel = D_SSS;
-      if (is_mem_rmw) seq_dsel = D_Z;
-      if (is_direct) seq_dsel = o_dbg_op[4] ? D_A : (mc == 3'd3) ? D_L : D_H;
-      if (is_xthl) seq_dsel = (mc == 3'd3) ? D_H : D_L;
-      if (is_ccc | is_call) seq_dsel = (mc == 3'd3) ? D_PCH : D_PCL;
-      if (is_rst) seq_dsel = (mc == 3'd1) ? D_PCH : D_PCL;
-      if (is_push) seq_dsel = (mc == 3'd1) ? D_PUSH_HI : D_PUSH_LO;
-    end
-  endfunction
-
-  // Last cycle of the unit: Jcc / Ccc end after their first operand byte
-  // when the condition fails.
-  function seq_last;
-    input [2:0] mc;
-    reg at_1, at_2, at_3, at_4;
+    reg at_1, at_2, at_3, at_4, at_le2;
+    reg [2:0] cyc, asel;
+    reg [3:0] dsel;
+    reg last;
     begin
       {at_1, at_2, at_3, at_4} = {mc == 3'd1, mc == 3'd2, mc == 3'd3, mc == 3'd4};
-      seq_last = 1'b1;
-      if (is_mem_rmw | is_lxi | is_dad | is_pop_ret | is_jmp | (is_out | is_in)) seq_last = at_2;
-      if (is_push | is_rst) seq_last = at_2;
-      if (is_jcc) seq_last = at_2 || !cond_ir(ddd);
-      if (is_direct) seq_last = o_dbg_op[4] ? at_3 : at_4;
-      if (is_xthl) seq_last = at_4;
-      if (is_ccc | is_call) seq_last = at_4 || (at_1 && is_ccc && !cond_ir(ddd));
+      at_le2 = (mc <= 3'd2);
+      {cyc, asel, dsel, last} = {CY_MR, A_PC, D_A, 1'b1};
+      case (cix_q)
+        C_HLT: cyc = CY_HLT;  // its fifth T-state
+        C_MOV_MR: {cyc, asel, dsel} = {CY_MW, A_HL, D_SSS};
+        C_MOV_RM, C_ALU_M: asel = A_HL;
+        C_MVI_M: {cyc, asel, dsel, last} = {at_1 ? CY_MR : CY_MW, at_1 ? A_PC : A_HL, D_Z, at_2};
+        C_INCDEC_M: {cyc, asel, dsel, last} = {at_1 ? CY_MR : CY_MW, A_HL, D_Z, at_2};
+        C_LXI: last = at_2;
+        C_DAD: {cyc, last} = {CY_BI, at_2};  // two bus idle cycles
+        C_STAX: {cyc, asel} = {CY_MW, o_dbg_op[4] ? A_DE : A_BC};
+        C_LDAX: asel = o_dbg_op[4] ? A_DE : A_BC;
+        C_DIRECT: begin  // STA LDA: address, one byte; SHLD LHLD: address, two bytes
+          {cyc, asel, last} = {(at_le2 || o_dbg_op[3]) ? CY_MR : CY_MW, at_le2 ? A_PC : A_WZ, o_dbg_op[4] ? at_3 : at_4};
+          dsel = o_dbg_op[4] ? D_A : at_3 ? D_L : D_H;
+        end
+        C_RCC, C_RET, C_POP: {asel, last} = {A_SP, at_2};
+        C_JCC: last = at_2 || !cond_ir(o_dbg_op[5:3]);
+        C_JMP: last = at_2;
+        C_OUT: {cyc, asel, last} = {at_1 ? CY_MR : CY_IOW, at_1 ? A_PC : A_ZZ, at_2};
+        C_IN: {cyc, asel, last} = {at_1 ? CY_MR : CY_IOR, at_1 ? A_PC : A_ZZ, at_2};
+        C_XTHL: begin  // H to SP+1 first
+          {cyc, asel, dsel} = {at_le2 ? CY_MR : CY_MW, (at_1 || at_4) ? A_SP : A_SP1, at_3 ? D_H : D_L};
+          last = at_4;  // XTHL: MR MR MW MW
+        end
+        C_CCC, C_CALL: begin
+          {cyc, asel, dsel} = {at_le2 ? CY_MR : CY_MW, at_le2 ? A_PC : A_SP, at_3 ? D_PCH : D_PCL};
+          last = at_4 || (at_1 && cix_q == C_CCC && !cond_ir(o_dbg_op[5:3]));
+        end
+        C_PUSH: {cyc, asel, dsel, last} = {CY_MW, A_SP, at_1 ? D_PUSH_HI : D_PUSH_LO, at_2};
+        C_RST: {cyc, asel, dsel, last} = {CY_MW, A_SP, at_1 ? D_PCH : D_PCL, at_2};
+        default: ;  // the classes done with their fetch never get here
+      endcase
+      if (o_dbg_kind == K_INTR && cyc == CY_MR && asel == A_PC) cyc = CY_INA;
+      seq_next = {cyc, asel, dsel, last};
     end
   endfunction
 
@@ -347,14 +310,14 @@ module cpu8085 (
     input [3:0] dsel;
     begin
       case (dsel)
-        D_SSS: dout_of = r8(sss);
+        D_SSS: dout_of = r8(o_dbg_op[2:0]);
         D_Z: dout_of = z_q;
         D_L: dout_of = r8(R_L);
         D_H: dout_of = r8(R_H);
         D_PCH: dout_of = o_dbg_pc[15:8];
         D_PCL: dout_of = o_dbg_pc[7:0];
-        D_PUSH_HI: dout_of = (rp == 2'd3) ? r8(R_A) : r8({rp, 1'b0});
-        D_PUSH_LO: dout_of = (rp == 2'd3) ? r8(R_F) : r8({rp, 1'b1});
+        D_PUSH_HI: dout_of = (o_dbg_op[5:4] == 2'd3) ? r8(R_A) : r8({o_dbg_op[5:4], 1'b0});
+        D_PUSH_LO: dout_of = (o_dbg_op[5:4] == 2'd3) ? r8(R_F) : r8({o_dbg_op[5:4], 1'b1});
         default: dout_of = r8(R_A);
       endcase
     end
@@ -406,15 +369,29 @@ module cpu8085 (
   // The block's variables (and b) are not traced: a Verilated model keeps
   // a traced variable as a member and stores every default to it at every
   // clock; untraced, they are C++ locals that the compiler optimizes.
+  // The decoder as a table: the class of every opcode, computed once (a
+  // Verilated model reads one entry per instruction instead of evaluating
+  // the decode; synthesis maps it to block RAM, read synchronously into
+  // the class register at the end of the block).
+  // The formal model decodes directly (the same function, untabulated:
+  // yosys evaluates the table's 256 entries slowly).
+`ifndef FORMAL
+  reg [5:0] dec_rom [0:255];
+  integer di;
+  initial for (di = 0; di < 256; di = di + 1) dec_rom[di] = class_of(decode(di[7:0]));
+`endif
+
   /* verilator tracing_off */
   integer b;
   always @(posedge i_clk) begin : cpu
-    reg [ 2:0] irq, a, c, mc;
+    reg [ 2:0] irq, c, mc;
+    reg [10:0] sq;                   // seq_next()
     reg [ 1:0] k;
     reg [15:0] pc_now;               // PC at a unit's first T-state
     reg        ie_now;               // IE at a unit's first T-state
     reg [ 3:0] of_v;                 // of_end() of the opcode read now
     reg        op_now;               // the opcode is read now
+    reg        ack_now;              // a TRAP / RST x.5 acknowledge starts now
     reg        pc_we;                // o_dbg_pc <= pc_n at the end
     reg [15:0] pc_n;
     reg        trap_ack, r75_clr;   // the edge latches are cleared now
@@ -426,6 +403,8 @@ module cpu8085 (
     reg        w_we, z_we;
     reg [ 7:0] w_n, z_n;
     reg        rf_we, pair_we, f_we;
+    reg        xchg;                 // XCHG swaps DE and HL now
+    reg        ie_we, sim_now;       // DI / EI, SIM now
     reg [ 2:0] rf_wa;
     reg [ 7:0] rf_wd, f_wd;
     reg [ 1:0] pair_wa;
@@ -439,12 +418,12 @@ module cpu8085 (
     // them C++ locals (it does so for a variable only if it is written
     // whole outside any branch before any read), which the compiler keeps
     // in registers and whose unused defaults it drops.
-    {op_now, pc_we, trap_ack, r75_clr} = 4'b0000;
+    {op_now, ack_now, pc_we, trap_ack, r75_clr} = 5'b00000;
     {irq, k, pc_now, ie_now, of_v, pc_n} = {IRQ_NONE, K_INSTR, 16'h0000, 1'b0, 4'h0, 16'h0000};
     {sp_we, sp_n, w_we, z_we, w_n, z_n} = {1'b0, 16'h0000, 2'b00, 8'h00, 8'h00};
     {rf_we, rf_wa, rf_wd, pair_we, pair_wa, pair_wd, f_we, f_wd} = {1'b0, 3'd0, 8'h00, 1'b0, 2'd0, 16'h0000, 1'b0, 8'h00};
-    {a, c, mc, hlt_next, end_of, end_mc, mc_1, mc_2, mc_3, mc_4} = {3'd0, 3'd0, 3'd0, 7'd0};
-    {pair_v, alu_v, dad_sum, alu_src} = {16'h0000, 16'h0000, 17'h00000, 3'd0};
+    {c, sq, mc, hlt_next, end_of, end_mc, mc_1, mc_2, mc_3, mc_4} = {3'd0, 11'd0, 3'd0, 7'd0};
+    {pair_v, alu_v, dad_sum, alu_src, xchg, ie_we, sim_now} = {16'h0000, 16'h0000, 17'h00000, 3'd0, 3'b000};
     b = 0;
     if (!i_rst && !i_dbg_load) begin
       // Bus strobes: one clock (T2); retire: the first T-state of a unit.
@@ -479,7 +458,7 @@ module cpu8085 (
       end else if (!unit_t1) begin
         // ---- A cycle's last T-state.
         mc = mc_q + 3'd1;
-        hlt_next = o_halted || (is_hlt && mc_q == 3'd1);
+        hlt_next = o_halted || (cix_q == C_HLT && mc_q == 3'd1);
         // The instruction's work, at the end of its cycles: of the
         // opcode fetch (end_of) or of a later cycle (end_mc); computed
         // here, written after the sequencer's registers below.
@@ -487,86 +466,122 @@ module cpu8085 (
         end_mc = !end_of;
         {mc_1, mc_2, mc_3, mc_4} = {mc_q == 3'd1, mc_q == 3'd2, mc_q == 3'd3, mc_q == 3'd4};
         if (o_dbg_kind != K_IDLE) begin
-          // Program counter: +1 for each operand byte read at PC; +2
-          // over the address of a Jcc / Ccc not taken (not read; an INTR
-          // acknowledge supplies no address to skip); jumps, calls,
-          // returns, RST.
-          if (end_of && is_pchl) {pc_we, pc_n} = {1'b1, r8(R_H), r8(R_L)};
-          if (end_mc) begin
-            if (o_cycle == CY_MR && asel_q == A_PC) {pc_we, pc_n} = {1'b1, o_dbg_pc + 16'd1};
-            if (mc_1 && (is_jcc | is_ccc) && !cond_ir(ddd) && o_dbg_kind != K_INTR) {pc_we, pc_n} = {1'b1, o_dbg_pc + 16'd2};
-            if (mc_2 && (is_jcc | is_jmp | is_rcc | is_ret)) {pc_we, pc_n} = {1'b1, i_din, z_q};
-            if (mc_4 && (is_ccc | is_call)) {pc_we, pc_n} = {1'b1, w_q, z_q};
-            if (mc_2 && is_rst) {pc_we, pc_n} = {1'b1, (o_dbg_kind == K_IACK) ? vec_q : {10'b0, ddd, 3'b000}};
-          end
-          // Stack pointer: pushes decrement before each write, pops
-          // increment after each read; SPHL, LXI SP, INX SP, DCX SP.
-          {sp_we, sp_n} = {1'b0, o_dbg_sp};
-          if (end_of && (is_push | is_rst)) {sp_we, sp_n} = {1'b1, o_dbg_sp - 16'd1};
-          if (end_of && is_sphl) {sp_we, sp_n} = {1'b1, r8(R_H), r8(R_L)};
-          if (end_of && is_inx && rp == 2'd3) {sp_we, sp_n} = {1'b1, o_dbg_sp + 16'd1};
-          if (end_of && is_dcx && rp == 2'd3) {sp_we, sp_n} = {1'b1, o_dbg_sp - 16'd1};
-          if (end_mc) begin
-            if (mc_2 && is_lxi && rp == 2'd3) {sp_we, sp_n} = {1'b1, i_din, z_q};
-            if (is_pop_ret) {sp_we, sp_n} = {1'b1, o_dbg_sp + 16'd1};
-            if ((mc_2 || mc_3) && (is_ccc | is_call)) {sp_we, sp_n} = {1'b1, o_dbg_sp - 16'd1};
-            if (mc_1 && (is_push | is_rst)) {sp_we, sp_n} = {1'b1, o_dbg_sp - 16'd1};
-          end
-          // SIM with R7.5 clears the RST 7.5 latch (at the end).
-          r75_clr = end_of && is_sim && o_dbg_regs[RF_A + 4];
-          // Register file B C D E H L F A, through three write ports
-          // decoded from the class: one register (rf_we: MOV, MVI, INR r
-          // / DCR r, accumulator results, loads), one pair B / D / H
-          // (pair_we: LXI, INX, DCX, DAD, POP but PSW, XTHL), the flags
-          // (f_we: ALU results, DAD's carry, POP PSW), and XCHG's swap of
-          // DE and HL; the temporary pair W Z (operand bytes, Z first;
-          // INR M / DCR M's result; SHLD / LHLD's address + 1). The ports
-          // and the ALU are computed only when a cycle ends.
-          // The ALU's register operand: DDD for INR / DCR, SSS otherwise (6:
-          // M, the byte read).
-          alu_src = (o_dbg_op[7:6] == 2'b00) ? ddd : sss;
-          // The ALU only for the classes whose result it is (a Verilated model
-          // skips it at the end of other cycles; its value is unused there).
-          alu_v = 16'h0000;
-          if (is_alu_r | is_alu_m | is_alu_i | is_incdec_r | is_incdec_m | is_acc)
-            alu_v = alu_ir(o_dbg_op, (alu_src == 3'd6) ? i_din : r8(alu_src), r8(R_A), r8(R_F));
-          pair_v = (rp == 2'd0) ? {r8(R_B), r8(R_C)} : (rp == 2'd1) ? {r8(R_D), r8(R_E)} : {r8(R_H), r8(R_L)};  // rp 3 (SP): not here
-          dad_sum = {1'b0, {r8(R_H), r8(R_L)}} + {1'b0, (rp == 2'd3) ? o_dbg_sp : pair_v};
-          {rf_we, rf_wa, rf_wd} = {1'b0, R_A, alu_v[15:8]};
-          {pair_we, pair_wa, pair_wd} = {1'b0, rp, i_din, z_q};
-          {f_we, f_wd} = {1'b0, alu_v[7:0]};
-          {w_we, z_we, w_n, z_n} = {2'b00, w_q, z_q};
-          if (end_of) begin
-            if (is_mov_rr) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, r8(sss)};
-            if (is_alu_r) rf_we = (ddd != 3'd7);  // CMP writes only F
-            if (is_incdec_r) {rf_we, rf_wa} = {1'b1, ddd};
-            if (is_acc) rf_we = 1'b1;
-            if (is_rim)
-              {rf_we, rf_wd} = {1'b1, i_sid, r75_latch_q | (i_rst75 & ~r75_prev_q), i_rst65, i_rst55,
-                                rim_after_trap_q ? ie_before_trap_q : o_ie, masks_q};
-            if (is_inx && rp != 2'd3) {pair_we, pair_wd} = {1'b1, pair_v + 16'd1};
-            if (is_dcx && rp != 2'd3) {pair_we, pair_wd} = {1'b1, pair_v - 16'd1};
-            if (is_alu_r | is_incdec_r | is_acc) f_we = 1'b1;
-          end else begin
-            if (is_mov_rm || is_mvi_r) {rf_we, rf_wa, rf_wd} = {1'b1, ddd, i_din};
-            if (is_alu_m || is_alu_i) rf_we = (ddd != 3'd7);
-            if (is_ldax || (is_in && mc_2)) {rf_we, rf_wd} = {1'b1, i_din};
-            if (is_direct && mc_3 && o_dbg_op[3]) {rf_we, rf_wa, rf_wd} = {1'b1, o_dbg_op[4] ? R_A : R_L, i_din};
-            if (is_direct && mc_4 && o_dbg_op[3]) {rf_we, rf_wa, rf_wd} = {1'b1, R_H, i_din};
-            if (is_pop && mc_2 && rp == 2'd3) {rf_we, rf_wd} = {1'b1, i_din};
-            if (mc_2 && rp != 2'd3 && (is_lxi || is_pop)) pair_we = 1'b1;
-            if (mc_2 && is_dad) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, dad_sum[15:0]};
-            if (mc_4 && is_xthl) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, {w_q, z_q}};
-            if (is_alu_m | is_alu_i | (is_incdec_m & mc_1)) f_we = 1'b1;
-            if (is_dad && mc_2) {f_we, f_wd} = {1'b1, o_dbg_regs[RF_F + 7:RF_F + 1], dad_sum[16]};
-            if (is_pop && mc_2 && rp == 2'd3) {f_we, f_wd} = {1'b1, z_q & 8'hD5};
-            if (mc_1 && (is_mvi_m | is_lxi | is_direct | is_pop_ret | is_jcc | is_jmp |
-                         (is_out | is_in) | is_xthl | (is_ccc | is_call)))
-              {z_we, z_n} = {1'b1, i_din};
-            if (mc_1 && is_incdec_m) {z_we, z_n} = {1'b1, alu_v[15:8]};
-            if (mc_2 && (is_direct | is_xthl | (is_ccc | is_call))) {w_we, w_n} = {1'b1, i_din};
-            if (mc_3 && is_direct && !o_dbg_op[4]) {w_we, z_we, w_n, z_n} = {2'b11, {w_q, z_q} + 16'd1};
-          end
+          // The instruction's work at the end of a cycle, by class: one
+          // case on the registered class index (a Verilated model
+          // reaches the arm in a few bit tests and runs only its
+          // statements; each arm tests the cycle index itself). Results
+          // go to variables (PC, SP, W Z, the register file's three write
+          // ports: one register rf_*, one pair B / D / H pair_*, the
+          // flags f_*), written after the sequencer below; the interrupt
+          // state (DI EI HLT RIM SIM) is written in its arm.
+          //
+          // Program counter, before the case: +1 for each operand byte
+          // read at PC (not in an INTR acknowledge, whose operands come
+          // by INTA cycles); the arms set jumps, calls, returns, RST, and
+          // +2 over the address of a Jcc / Ccc not taken (not read; an
+          // INTR acknowledge supplies no address to skip).
+          if (end_mc && o_cycle == CY_MR && asel_q == A_PC) {pc_we, pc_n} = {1'b1, o_dbg_pc + 16'd1};
+          case (cix_q)
+            C_HLT: if (end_mc) o_halted <= 1'b1;  // its fifth T-state
+            C_MOV_RR: {rf_we, rf_wa, rf_wd} = {1'b1, o_dbg_op[5:3], r8(o_dbg_op[2:0])};
+            C_MOV_RM, C_MVI_R: if (end_mc) {rf_we, rf_wa, rf_wd} = {1'b1, o_dbg_op[5:3], i_din};
+            C_ALU_R, C_INCDEC_R, C_ACC: begin
+              // ALU r, INR / DCR r, the accumulator group: at the end of
+              // the fetch. The operand: SSS for ALU r, DDD otherwise (6:
+              // STC, whose operand is unused).
+              alu_src = (o_dbg_op[7:6] == 2'b00) ? o_dbg_op[5:3] : o_dbg_op[2:0];
+              alu_v = alu_ir(o_dbg_op, (alu_src == 3'd6) ? i_din : r8(alu_src), r8(R_A), r8(R_F));
+              // CMP writes only F; INR / DCR r their register.
+              {rf_we, rf_wa, rf_wd} = {(cix_q != C_ALU_R) || (o_dbg_op[5:3] != 3'd7), (cix_q == C_INCDEC_R) ? o_dbg_op[5:3] : R_A, alu_v[15:8]};
+              {f_we, f_wd} = {1'b1, alu_v[7:0]};
+            end
+            C_ALU_M, C_ALU_I: if (end_mc) begin
+              alu_v = alu_ir(o_dbg_op, i_din, r8(R_A), r8(R_F));
+              {rf_we, rf_wa, rf_wd} = {o_dbg_op[5:3] != 3'd7, R_A, alu_v[15:8]};
+              {f_we, f_wd} = {1'b1, alu_v[7:0]};
+            end
+            C_MVI_M: if (mc_1) {z_we, z_n} = {1'b1, i_din};
+            C_INCDEC_M: if (mc_1) begin  // INR / DCR M: the result to Z, written by the MW
+              alu_v = alu_ir(o_dbg_op, i_din, r8(R_A), r8(R_F));
+              {z_we, z_n} = {1'b1, alu_v[15:8]};
+              {f_we, f_wd} = {1'b1, alu_v[7:0]};
+            end
+            C_LXI: begin
+              if (mc_1) {z_we, z_n} = {1'b1, i_din};
+              if (mc_2 && o_dbg_op[5:4] != 2'd3) {pair_we, pair_wa, pair_wd} = {1'b1, o_dbg_op[5:4], i_din, z_q};
+              if (mc_2 && o_dbg_op[5:4] == 2'd3) {sp_we, sp_n} = {1'b1, i_din, z_q};
+            end
+            C_DAD: if (mc_2) begin
+              pair_v = (o_dbg_op[5:4] == 2'd0) ? {r8(R_B), r8(R_C)} : (o_dbg_op[5:4] == 2'd1) ? {r8(R_D), r8(R_E)} :
+                       (o_dbg_op[5:4] == 2'd2) ? {r8(R_H), r8(R_L)} : o_dbg_sp;
+              dad_sum = {1'b0, {r8(R_H), r8(R_L)}} + {1'b0, pair_v};
+              {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, dad_sum[15:0]};
+              {f_we, f_wd} = {1'b1, o_dbg_regs[RF_F + 7:RF_F + 1], dad_sum[16]};
+            end
+            C_INX, C_DCX: begin
+              // Stack pointer: SP for rp 3, a pair otherwise.
+              pair_v = (o_dbg_op[5:4] == 2'd0) ? {r8(R_B), r8(R_C)} : (o_dbg_op[5:4] == 2'd1) ? {r8(R_D), r8(R_E)} :
+                       (o_dbg_op[5:4] == 2'd2) ? {r8(R_H), r8(R_L)} : o_dbg_sp;
+              pair_v = (cix_q == C_INX) ? pair_v + 16'd1 : pair_v - 16'd1;
+              if (o_dbg_op[5:4] == 2'd3) {sp_we, sp_n} = {1'b1, pair_v};
+              else {pair_we, pair_wa, pair_wd} = {1'b1, o_dbg_op[5:4], pair_v};
+            end
+            C_LDAX: if (end_mc) {rf_we, rf_wa, rf_wd} = {1'b1, R_A, i_din};
+            C_DIRECT: begin  // SHLD LHLD STA LDA: address Z W, then the data
+              if (mc_1) {z_we, z_n} = {1'b1, i_din};
+              if (mc_2) {w_we, w_n} = {1'b1, i_din};
+              if (mc_3 && o_dbg_op[3]) {rf_we, rf_wa, rf_wd} = {1'b1, o_dbg_op[4] ? R_A : R_L, i_din};
+              if (mc_3 && !o_dbg_op[4]) {w_we, z_we, w_n, z_n} = {2'b11, {w_q, z_q} + 16'd1};
+              if (mc_4 && o_dbg_op[3]) {rf_we, rf_wa, rf_wd} = {1'b1, R_H, i_din};
+            end
+            C_RIM: begin  // RIM; it ends the after-TRAP IE
+              {rf_we, rf_wa, rf_wd} = {1'b1, R_A, i_sid, r75_latch_q | (i_rst75 & ~r75_prev_q), i_rst65, i_rst55,
+                                       rim_after_trap_q ? ie_before_trap_q : o_ie, masks_q};
+              rim_after_trap_q <= 1'b0;
+            end
+            C_SIM: begin  // the masks (with MSE), SOD (with SOE): below; R7.5 clears the latch
+              sim_now = 1'b1;
+              r75_clr = o_dbg_regs[RF_A + 4];
+            end
+            C_RCC, C_RET, C_POP: if (end_mc) begin  // pops increment SP after each read
+              {sp_we, sp_n} = {1'b1, o_dbg_sp + 16'd1};
+              if (mc_1) {z_we, z_n} = {1'b1, i_din};
+              if (mc_2 && cix_q != C_POP) {pc_we, pc_n} = {1'b1, i_din, z_q};
+              if (mc_2 && cix_q == C_POP && o_dbg_op[5:4] != 2'd3) {pair_we, pair_wa, pair_wd} = {1'b1, o_dbg_op[5:4], i_din, z_q};
+              if (mc_2 && cix_q == C_POP && o_dbg_op[5:4] == 2'd3) begin
+                {rf_we, rf_wa, rf_wd} = {1'b1, R_A, i_din};
+                {f_we, f_wd} = {1'b1, z_q & 8'hD5};
+              end
+            end
+            C_JCC, C_JMP, C_OUT, C_IN: begin
+              if (mc_1) {z_we, z_n} = {1'b1, i_din};
+              if (mc_1 && cix_q == C_JCC && !cond_ir(o_dbg_op[5:3]) && o_dbg_kind != K_INTR) {pc_we, pc_n} = {1'b1, o_dbg_pc + 16'd2};
+              if (mc_2 && (cix_q == C_JCC || cix_q == C_JMP)) {pc_we, pc_n} = {1'b1, i_din, z_q};
+              if (mc_2 && cix_q == C_IN) {rf_we, rf_wa, rf_wd} = {1'b1, R_A, i_din};
+            end
+            C_XTHL: begin  // (SP) to Z, (SP+1) to W, H and L written, then W Z to HL
+              if (mc_1) {z_we, z_n} = {1'b1, i_din};
+              if (mc_2) {w_we, w_n} = {1'b1, i_din};
+              if (mc_4) {pair_we, pair_wa, pair_wd} = {1'b1, 2'd2, {w_q, z_q}};
+            end
+            C_XCHG: xchg = 1'b1;
+            C_PCHL: {pc_we, pc_n} = {1'b1, r8(R_H), r8(R_L)};
+            C_SPHL: {sp_we, sp_n} = {1'b1, r8(R_H), r8(R_L)};
+            C_DI, C_EI: ie_we = 1'b1;  // at the end of the fetch; EI with its one-unit shadow (below)
+            C_CCC, C_CALL: begin  // address Z W; pushes decrement SP before each write
+              if (mc_1) {z_we, z_n} = {1'b1, i_din};
+              if (mc_1 && cix_q == C_CCC && !cond_ir(o_dbg_op[5:3]) && o_dbg_kind != K_INTR) {pc_we, pc_n} = {1'b1, o_dbg_pc + 16'd2};
+              if (mc_2) {w_we, w_n} = {1'b1, i_din};
+              if (mc_2 || mc_3) {sp_we, sp_n} = {1'b1, o_dbg_sp - 16'd1};
+              if (mc_4) {pc_we, pc_n} = {1'b1, w_q, z_q};
+            end
+            C_PUSH, C_RST: begin
+              if (end_of || mc_1) {sp_we, sp_n} = {1'b1, o_dbg_sp - 16'd1};
+              if (mc_2 && cix_q == C_RST) {pc_we, pc_n} = {1'b1, (o_dbg_kind == K_IACK) ? vec_q : {10'b0, o_dbg_op[5:3], 3'b000}};
+            end
+            C_MOV_MR, C_STAX, C_NOP: ;  // no work but the bus's
+            default: ;  // (no class)
+          endcase
 `ifdef FORMAL
           // The byte and pair write ports never address F (index 6, pair 3).
           assert (!rf_we || rf_wa != R_F);
@@ -585,26 +600,22 @@ module cpu8085 (
           {asel_q, dsel_q, o_io} <= {A_PC, D_A, 1'b0};
           mc_q <= 3'd0;
         end else begin
-          a = seq_asel(mc);
-          c = seq_cyc(mc, a);
-          {o_cycle, asel_q, dsel_q, last_q} <= {c, a, seq_dsel(mc), seq_last(mc)};
+          // (One variable: Verilator splits an assignment to a
+          // concatenation into one per part, each calling the function.)
+          sq = seq_next(mc);
+          c = sq[10:8];
+          {o_cycle, asel_q, dsel_q, last_q} <= sq;
           len_q <= (c == CY_HLT) ? 3'd1 : 3'd3;
           o_io <= (c == CY_IOR || c == CY_IOW);
           // A 1-T cycle (HLT's fifth T-state) has no T2.
           mc_q <= mc;
         end
         if (o_dbg_kind != K_IDLE) begin
-          // The work's results. Interrupt state: DI and EI set IE at the
-          // end of their fetch (EI with its one-unit shadow); HLT's fifth
-          // T-state sets halted; RIM ends the after-TRAP IE. SIM: the
-          // interrupt masks (with MSE), the serial output (with SOE).
-          if (end_of && (is_di || is_ei)) begin
-            o_ie <= is_ei;
-            ei_delay_q <= is_ei;
-          end
-          if (end_mc && is_hlt) o_halted <= 1'b1;
-          if (end_of && is_rim) rim_after_trap_q <= 1'b0;
-          if (end_of && is_sim) begin
+          // The work's results. DI / EI, SIM: written here, after RIM's
+          // read of IE and the masks in the case above (a register written
+          // before a later read costs a Verilated model a shadow copy).
+          if (ie_we) {o_ie, ei_delay_q} <= {2{cix_q == C_EI}};
+          if (sim_now) begin
             if (o_dbg_regs[RF_A + 3]) masks_q <= o_dbg_regs[RF_A + 2:RF_A + 0];
             if (o_dbg_regs[RF_A + 6]) o_sod <= o_dbg_regs[RF_A + 7];
           end
@@ -616,12 +627,17 @@ module cpu8085 (
           // so. One enable per byte and per pair (what the register
           // file's address decode was as an array; the register file
           // keeps its shadow copy in a Verilated model: a partial write).
-          for (b = 0; b < 8; b = b + 1)
-            if (rf_we && rf_wa != R_F && rf_pos(rf_wa) == b[2:0]) o_dbg_regs[8*b +: 8] <= rf_wd;
-          for (b = 0; b < 3; b = b + 1)  // BC at bits 47:32, DE 31:16, HL 15:0
-            if (pair_we && pair_wa == b[1:0]) o_dbg_regs[16*(2-b) +: 16] <= pair_wd;
+          // (Each port under its enable: a Verilated model tests one
+          // enable, not each byte, at the end of a cycle that does not
+          // write.)
+          if (rf_we)
+            for (b = 0; b < 8; b = b + 1)
+              if (rf_wa != R_F && rf_pos(rf_wa) == b[2:0]) o_dbg_regs[8*b +: 8] <= rf_wd;
+          if (pair_we)
+            for (b = 0; b < 3; b = b + 1)  // BC at bits 47:32, DE 31:16, HL 15:0
+              if (pair_wa == b[1:0]) o_dbg_regs[16*(2-b) +: 16] <= pair_wd;
           if (f_we) o_dbg_regs[RF_F + 7:RF_F] <= f_wd;
-          if (end_of && is_xchg) o_dbg_regs[31:0] <= {o_dbg_regs[15:0], o_dbg_regs[31:16]};  // DE <-> HL
+          if (xchg) o_dbg_regs[31:0] <= {o_dbg_regs[15:0], o_dbg_regs[31:16]};  // DE <-> HL
         end
       end
       if (unit_t1) begin
@@ -638,6 +654,7 @@ module cpu8085 (
           {o_cycle, asel_q, dsel_q, o_io} <= {c, A_PC, D_A, 1'b0};
           // Until the opcode is read, an instruction's fetch is 4 T long.
           {len_q, last_q} <= (k == K_IACK) ? {3'd6, 1'b0} : {3'd4, 1'b1};
+          ack_now = (k == K_IACK);
           o_rd <= (c == CY_OF);
           o_inta <= (c == CY_INA);
           o_addr <= pc_now;
@@ -727,31 +744,22 @@ module cpu8085 (
       o_dbg_sp <= i_dbg_sp;
       o_dbg_regs <= i_dbg_regs;
     end
-  end
-
-
-  // Instruction register and its decoded classes (cpu8085_decode.vh), in
-  // a block of their own (a Verilated model then reads the classes' and
-  // the opcode fields' wires in the block above where they are used, not
-  // as variables computed at every clock): the opcode at the end of T3 of
-  // the fetch / INTA; a TRAP / RST x.5 acknowledge runs as RST 7 (FF),
-  // loaded at the end of its first cycle's T2 (nothing reads the classes
-  // before that cycle ends; its kind is known from T2 on).
-  always @(posedge i_clk) begin : instruction
-    if (i_rst) begin
-      o_dbg_op <= 8'h00;
-      cls_q <= decode(8'h00);
-    end else if (!i_dbg_load && mc_q == 3'd0) begin
-      if (o_tstate == 3'd2 && o_dbg_kind == K_IACK) begin
-        o_dbg_op <= 8'hFF;
-        cls_q <= decode(8'hFF);
-      end
-      if (o_tstate == 3'd3 && (o_dbg_kind == K_INSTR || o_dbg_kind == K_INTR)) begin
-        o_dbg_op <= i_din;
-        cls_q <= decode(i_din);
-      end
+    // Instruction register and its class (the table above),
+    // written last (every read of them in the block precedes): the
+    // opcode at the end of T3 of the fetch / INTA; a TRAP / RST x.5
+    // acknowledge runs as RST 7 (FF), loaded at the end of its first
+    // T-state (nothing reads the class before its first cycle ends);
+    // 00 at reset. One read of the table.
+    if (i_rst || op_now || ack_now) begin
+`ifndef FORMAL
+      cix_q <= dec_rom[i_rst ? 8'h00 : op_now ? i_din : 8'hFF];
+`else
+      cix_q <= class_of(decode(i_rst ? 8'h00 : op_now ? i_din : 8'hFF));
+`endif
+      o_dbg_op <= i_rst ? 8'h00 : op_now ? i_din : 8'hFF;
     end
   end
+
 
 `ifdef FORMAL
   // ------------------------------------------------------------- formal
@@ -764,8 +772,18 @@ module cpu8085 (
     if (!f_past_valid) assume (i_rst);
     if (i_dbg_load) assume (unit_t1);
   end
-  // The registered classes.
-  wire [39:0] classes = cls_q;
+  // The classes of the registered opcode, and the registered class.
+  wire [39:0] classes = decode(o_dbg_op);
+  wire is_hlt = (cix_q == C_HLT), is_mov_mr = (cix_q == C_MOV_MR), is_mov_rm = (cix_q == C_MOV_RM);
+  wire is_alu_m = (cix_q == C_ALU_M), is_alu_i = (cix_q == C_ALU_I), is_mvi_r = (cix_q == C_MVI_R);
+  wire is_mvi_m = (cix_q == C_MVI_M), is_incdec_m = (cix_q == C_INCDEC_M), is_lxi = (cix_q == C_LXI);
+  wire is_dad = (cix_q == C_DAD), is_inx = (cix_q == C_INX), is_dcx = (cix_q == C_DCX);
+  wire is_stax = (cix_q == C_STAX), is_ldax = (cix_q == C_LDAX), is_direct = (cix_q == C_DIRECT);
+  wire is_rcc = (cix_q == C_RCC), is_ret = (cix_q == C_RET), is_pop = (cix_q == C_POP);
+  wire is_jcc = (cix_q == C_JCC), is_jmp = (cix_q == C_JMP), is_out = (cix_q == C_OUT);
+  wire is_in = (cix_q == C_IN), is_xthl = (cix_q == C_XTHL), is_pchl = (cix_q == C_PCHL);
+  wire is_sphl = (cix_q == C_SPHL), is_ccc = (cix_q == C_CCC), is_call = (cix_q == C_CALL);
+  wire is_push = (cix_q == C_PUSH), is_rst = (cix_q == C_RST);
   // The 39 classes of decode_all (NOP included) are one-hot.
   function f_onehot;
     input [42:0] all;
@@ -803,15 +821,15 @@ module cpu8085 (
     if (is_direct) f_t_expect = o_dbg_op[4] ? 5'd13 : 5'd16;  // STA LDA / SHLD LHLD
     if (is_xthl) f_t_expect = 5'd16;
     if (is_call) f_t_expect = 5'd18;
-    if (is_rcc) f_t_expect = cond_ir(ddd) ? 5'd12 : 5'd6;
-    if (is_jcc) f_t_expect = cond_ir(ddd) ? 5'd10 : 5'd7;
-    if (is_ccc) f_t_expect = cond_ir(ddd) ? 5'd18 : 5'd9;
+    if (is_rcc) f_t_expect = cond_ir(o_dbg_op[5:3]) ? 5'd12 : 5'd6;
+    if (is_jcc) f_t_expect = cond_ir(o_dbg_op[5:3]) ? 5'd10 : 5'd7;
+    if (is_ccc) f_t_expect = cond_ir(o_dbg_op[5:3]) ? 5'd18 : 5'd9;
   end
 
   always @* begin
     if (f_past_valid) begin
       // The registered classes are the decode of o_dbg_op, one-hot.
-      assert (classes == decode(o_dbg_op));
+      assert (cix_q == class_of(classes));
       assert (f_onehot(decode_all(o_dbg_op)));
       // The sequencer stays in range: T1..T6 in an opcode fetch / BI6,
       // T1..T3 in later cycles, at most five cycles per unit.

@@ -196,3 +196,32 @@ function [2:0] decode_of;
     decode_of = {of6, of_only, rcc};
   end
 endfunction
+
+// The class of an opcode as an index (decode_all's order, HLT 0 to RST
+// 38), from decode()'s flags: cpu8085.v registers it with the classes and dispatches the work of
+// a cycle's end on it by one case (a Verilated model reaches the arm in a
+// few bit tests instead of testing each class).
+localparam [5:0] C_HLT = 6'd0, C_MOV_RR = 6'd1, C_MOV_MR = 6'd2, C_MOV_RM = 6'd3;
+localparam [5:0] C_ALU_R = 6'd4, C_ALU_M = 6'd5, C_ALU_I = 6'd6, C_MVI_R = 6'd7;
+localparam [5:0] C_MVI_M = 6'd8, C_INCDEC_R = 6'd9, C_INCDEC_M = 6'd10, C_ACC = 6'd11;
+localparam [5:0] C_LXI = 6'd12, C_DAD = 6'd13, C_INX = 6'd14, C_DCX = 6'd15;
+localparam [5:0] C_STAX = 6'd16, C_LDAX = 6'd17, C_DIRECT = 6'd18, C_RIM = 6'd19;
+localparam [5:0] C_SIM = 6'd20, C_NOP = 6'd21, C_RCC = 6'd22, C_RET = 6'd23;
+localparam [5:0] C_POP = 6'd24, C_JCC = 6'd25, C_JMP = 6'd26, C_OUT = 6'd27;
+localparam [5:0] C_IN = 6'd28, C_XTHL = 6'd29, C_XCHG = 6'd30, C_PCHL = 6'd31;
+localparam [5:0] C_SPHL = 6'd32, C_DI = 6'd33, C_EI = 6'd34, C_CCC = 6'd35;
+localparam [5:0] C_CALL = 6'd36, C_PUSH = 6'd37, C_RST = 6'd38;
+function [5:0] class_of;
+  input [39:0] cls;  // decode()'s result
+  integer i;
+  begin
+    // decode() has no NOP: its bits 39..19 are classes 0..20 (HLT..SIM),
+    // 18..2 classes 22..38 (Rcc..RST), 1..0 the groups.
+    class_of = C_NOP;
+    for (i = 0; i < 21; i = i + 1)
+      if (cls[39 - i]) class_of = i[5:0];
+    for (i = 22; i < 39; i = i + 1)
+      if (cls[40 - i]) class_of = i[5:0];
+  end
+endfunction
+

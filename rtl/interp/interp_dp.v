@@ -213,15 +213,7 @@ module interp_dp #(
   // their AND; a + 2 == b: the low bits equal and a + 1 == b above them),
   // so the block carries ti and to (2W bits) rather than ti + 1, ti - 1
   // and to - 2 (3W + 6 bits, three adders in blk_prep; issue 15).
-  function automatic [W:0] inc_terms(input [W:0] a, input [W:0] b);
-    integer i;
-    begin
-      inc_terms[0] = a[0] ^ b[0];
-      inc_terms[1] = (a[1] ^ b[1]) == (a[0] | ~b[0]);
-      for (i = 2; i <= W; i = i + 1)
-        inc_terms[i] = (a[i] ^ b[i]) == (a[i-1] & ~b[i-1]);
-    end
-  endfunction
+`include "inc_terms.vh"
   wire [W+1:0] ci_x = {2'b00, ci_q};
   wire c_ci_ti2 = (ci_x == ti2_q);
   wire c_co_ti1 = &inc_terms({1'b0, ti_q}, {1'b0, co_q});   // ti + 1 == co

@@ -36,6 +36,7 @@
 #include "interp/circular.hpp"
 #include "registry.hpp"
 #include "sw8085/interp/host.hpp"
+#include "sw8085/interp/table1_moves.hpp"
 #if __has_include("board_machine.hpp")
 #include "board_machine.hpp"
 #endif
@@ -175,36 +176,6 @@ i8085::MachineFactory counted(i8085::MachineFactory f, Progress& p) {
   };
 }
 
-// ---- The standard moves -----------------------------------------------------
-
-// An arc over about n pulses of the circle through (xs, ys), ending at an
-// accepted end point (the model's position there).
-Move walk_arc(std::int64_t xs, std::int64_t ys, Sense s, int n) {
-  Circular<24> walk(xs, ys, xs, ys, s);
-  for (int i = 0; i < n; ++i) walk.step();
-  auto near = [](const State& st) { return std::llabs(st.d) <= std::llabs(st.x) + std::llabs(st.y); };
-  while (!near(walk.state())) walk.step();
-  return Move::arc(xs, ys, walk.state().x, walk.state().y, s);
-}
-
-std::vector<Move> standard_lines() {
-  return {Move::line(3000, 1234), Move::line(-2600, -2599), Move::line(1, 2000),   Move::line(-4000, 0),
-          Move::line(0, -300),    Move::line(257, -65),     Move::line(12345, -6789), Move::line(65537, -3),
-          Move::line(-7, 9)};
-}
-
-std::vector<Move> standard_arcs() {
-  const std::int64_t big = (std::int64_t{1} << 24) - 1;
-  return {Move::arc(100, 0, 100, 0, Sense::CCW),
-          Move::arc(0, -100, 0, -100, Sense::CW),
-          Move::arc(1000, 0, 0, 1000, Sense::CCW),
-          Move::arc(-707, 707, 707, -707, Sense::CW),
-          Move::arc(3, 4, -4, -3, Sense::CCW),
-          walk_arc(big, 0, Sense::CCW, 3000),
-          walk_arc(5, -16777200, Sense::CW, 3000),
-          walk_arc(11863282, -11863282, Sense::CCW, 2000)};
-}
-
 // ---- Measurement --------------------------------------------------------------
 
 // Per command pulse: T-states and instructions of every routine.
@@ -332,7 +303,7 @@ Rows run_table1(const Plan& plan, Progress& progress) {
   const auto iss = counted(i8085::make_iss, progress);
   sw8085::Program::builtin();  // loaded before the clock starts
   progress.phase("per-pulse lengths on the ISS", 0);
-  Rows r{measure_pulses(standard_lines(), iss), measure_pulses(standard_arcs(), iss)};
+  Rows r{measure_pulses(sw8085::table1_lines(), iss), measure_pulses(sw8085::table1_arcs(), iss)};
   const double measure_t = double(progress.done());  // the same on any T-state exact engine
   const double iss_rate = progress.rate_so_far();
   const double bisect_t = bisection_tstates(r.lin) + bisection_tstates(r.circ);
@@ -351,16 +322,16 @@ Rows run_table1(const Plan& plan, Progress& progress) {
           << engine_tps / 1e6 << " M T-states/s";
   if (plan.progress) say(progress, first.str());  // a terminal, or --progress
   progress.phase("command period bisected on the ISS", static_cast<std::uint64_t>(bisect_t));
-  r.lin.period_min = bisect_period(standard_lines(), iss, 20, first_hi(r.lin));
-  r.circ.period_min = bisect_period(standard_arcs(), iss, 20, first_hi(r.circ));
+  r.lin.period_min = bisect_period(sw8085::table1_lines(), iss, 20, first_hi(r.lin));
+  r.circ.period_min = bisect_period(sw8085::table1_arcs(), iss, 20, first_hi(r.circ));
   r.lin.period_method = r.circ.period_method = "bisection on the ISS";
   if (plan.engine == "iss") return r;
   const auto engine = counted(plan.factory, progress);
   progress.phase("engine " + plan.engine + ": lines", static_cast<std::uint64_t>(engine_t));
   Rows e;
-  e.lin = confirm_row(standard_lines(), engine, r.lin, "engine " + plan.engine);
+  e.lin = confirm_row(sw8085::table1_lines(), engine, r.lin, "engine " + plan.engine);
   progress.label("engine " + plan.engine + ": arcs");
-  e.circ = confirm_row(standard_arcs(), engine, r.circ, "engine " + plan.engine);
+  e.circ = confirm_row(sw8085::table1_arcs(), engine, r.circ, "engine " + plan.engine);
   return e;
 }
 

@@ -157,15 +157,6 @@ TEST(Mailbox, LineSegmentsStartOnTheModelsWalk) {
 // decoding) the model's state after it, and inside a segment no pulse but
 // the last one wraps a coordinate's low byte or changes q or k (what the
 // program does not handle: docs/sw8085.md).
-// An arc over about n pulses of the circle through (xs, ys), to an accepted end.
-Move walked_arc(std::int64_t xs, std::int64_t ys, Sense s, int n) {
-  Circular<24> walk(xs, ys, xs, ys, s);
-  for (int i = 0; i < n; ++i) walk.step();
-  auto near = [](const State& st) { return std::llabs(st.d) <= std::llabs(st.x) + std::llabs(st.y); };
-  while (!near(walk.state())) walk.step();
-  return Move::arc(xs, ys, walk.state().x, walk.state().y, s);
-}
-
 TEST(Mailbox, ArcSegmentsStartOnTheModelsWalk) {
   const Codes c = Codes::from_symbols(Program::builtin().symbols);
   const std::int64_t big = (std::int64_t{1} << 24) - 1;

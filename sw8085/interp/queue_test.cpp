@@ -199,15 +199,13 @@ TEST(Overrun, TooFastCommandsAreCountedNeverSilentlyLost) {
   EXPECT_EQ(pulses, want);
 }
 
-// A line of more than 65536 P steps runs as segments (three here, the
-// second one switched in while the command train runs), then the next
-// move: at a rate the program keeps up with, no command is lost or idle
-// between the segments, and the pulses are the model's.
-TEST(Queue, LongLineRunsAsSegmentsBackToBack) {
+// Drives the moves with a command every period_t T-states: every move
+// done, no command lost (overrun) or idle, one pulse per command, and the
+// pulses are the model's.
+void expect_kept_up_like_the_model(const std::vector<Move>& moves, double period_t) {
   Host h;
-  const std::vector<Move> moves = {Move::line(-131075, 77), Move::line(3, 5), Move::line(0, -131074)};
   std::vector<Pulse> pulses;
-  const Host::Timed t = h.drive(moves, 260.0, &pulses);
+  const Host::Timed t = h.drive(moves, period_t, &pulses);
   ASSERT_TRUE(t.all_done);
   EXPECT_EQ(t.overruns, 0u);
   EXPECT_EQ(t.idle_commands, 0u);
@@ -216,6 +214,15 @@ TEST(Queue, LongLineRunsAsSegmentsBackToBack) {
   for (const auto& m : moves)
     for (const auto& s : run_model<24>(m).steps) want.push_back(s.pulse);
   EXPECT_EQ(pulses, want);
+}
+
+// A line of more than 65536 P steps runs as segments (three here, the
+// second one switched in while the command train runs), then the next
+// move: at a rate the program keeps up with, no command is lost or idle
+// between the segments, and the pulses are the model's.
+TEST(Queue, LongLineRunsAsSegmentsBackToBack) {
+  const std::vector<Move> moves = {Move::line(-131075, 77), Move::line(3, 5), Move::line(0, -131074)};
+  expect_kept_up_like_the_model(moves, 260.0);
 }
 
 // Arcs run as segments (a new one at every byte wrap, crossing, axis
@@ -227,20 +234,10 @@ TEST(Queue, LongLineRunsAsSegmentsBackToBack) {
 // pulses are the model's. (Seen passing with the main loop's arming
 // broken: h_idle and the RST 7.5 latch carry it at this rate.)
 TEST(Queue, ArcSegmentsBackToBackUnderACommandTrain) {
-  Host h;
   const std::vector<Move> moves = {short_arc(kMax, 0, Sense::CCW, 1500), Move::arc(300, 0, 300, 0, Sense::CW),
                                    Move::arc(-256, 1, 1, 256, Sense::CW), short_arc(5, -16777200, Sense::CW, 900),
                                    Move::line(3, 5)};
-  std::vector<Pulse> pulses;
-  const Host::Timed t = h.drive(moves, 320.0, &pulses);
-  ASSERT_TRUE(t.all_done);
-  EXPECT_EQ(t.overruns, 0u);
-  EXPECT_EQ(t.idle_commands, 0u);
-  EXPECT_EQ(t.commands, t.pulses);
-  std::vector<Pulse> want;
-  for (const auto& m : moves)
-    for (const auto& s : run_model<24>(m).steps) want.push_back(s.pulse);
-  EXPECT_EQ(pulses, want);
+  expect_kept_up_like_the_model(moves, 320.0);
 }
 
 TEST(Overrun, SlowEnoughCommandsLoseNone) {

@@ -4,7 +4,7 @@
 // with coordinates <= 9 in both senses, full circles of R = 1..300, and
 // 24-bit arcs near the axes and the diagonals (byte wraps, crossings with
 // 24-bit values). With the argument `table1`: the 8 arcs of `contour
-// table1`'s standard set instead (sim/cli/cmd_table1.cpp). The figures of
+// table1`'s standard set instead (table1_moves.hpp). The figures of
 // docs/sw8085.md's per-routine table.
 #include <cstdio>
 #include <map>
@@ -13,6 +13,7 @@
 #include "interp/circular.hpp"
 #include "interp/engine.hpp"
 #include "sw8085/interp/host.hpp"
+#include "sw8085/interp/table1_moves.hpp"
 
 using namespace contour;
 
@@ -25,24 +26,13 @@ bool accepted(const Move& m) {
     return false;
   }
 }
-
-Move walked(std::int64_t xs, std::int64_t ys, Sense s, int n) {
-  Circular<24> walk(xs, ys, xs, ys, s);
-  for (int i = 0; i < n; ++i) walk.step();
-  auto near = [](const State& st) { return std::llabs(st.d) <= std::llabs(st.x) + std::llabs(st.y); };
-  while (!near(walk.state())) walk.step();
-  return Move::arc(xs, ys, walk.state().x, walk.state().y, s);
-}
 }  // namespace
 
 int main(int argc, char** argv) {
   std::vector<Move> moves;
   const std::int64_t big = (std::int64_t{1} << 24) - 1;
   if (argc > 1 && std::string(argv[1]) == "table1") {
-    moves = {Move::arc(100, 0, 100, 0, Sense::CCW),        Move::arc(0, -100, 0, -100, Sense::CW),
-             Move::arc(1000, 0, 0, 1000, Sense::CCW),      Move::arc(-707, 707, 707, -707, Sense::CW),
-             Move::arc(3, 4, -4, -3, Sense::CCW),          walked(big, 0, Sense::CCW, 3000),
-             walked(5, -16777200, Sense::CW, 3000),        walked(11863282, -11863282, Sense::CCW, 2000)};
+    moves = sw8085::table1_arcs();
   } else {
   for (int xs = -9; xs <= 9; ++xs)
     for (int ys = -9; ys <= 9; ++ys)
@@ -56,7 +46,7 @@ int main(int argc, char** argv) {
   for (Sense s : {Sense::CCW, Sense::CW})
     for (auto [xs, ys] : {std::pair<std::int64_t, std::int64_t>{big, 0}, {0, big}, {-big, 3}, {5, -big},
                           {11863282, 11863282}, {-16777000, 2700}, {300, 16777000}, {-11863282, -11863282}})
-      if (xs * xs + ys * ys <= big * big) moves.push_back(walked(xs, ys, s, 3000));
+      if (xs * xs + ys * ys <= big * big) moves.push_back(walked_arc(xs, ys, s, 3000));
   }
   std::map<int, std::uint64_t> hist;
   sw8085::Host host;

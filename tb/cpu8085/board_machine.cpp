@@ -72,12 +72,28 @@ class BoardMachine final : public i8085::Machine {
     i8085::Step s;
     s.t_before = t_;
     s.mode = i8085::Mode::i8085;
-    do {
-      clock_.low();
-      forward_write();
-      clock_.high();
-      ++t_;
-    } while (!top().o_retire);
+#if VERILATOR_VERSION_INTEGER == 5006000
+    if (clock_.direct()) {
+      // The one-eval path with the rising edge called directly
+      // (one_eval_clock.hpp): the same T-states, the path's tests hoisted
+      // out of the loop.
+      auto& t = top();
+      clock_.posedge_loop_begin();
+      do {
+        if (t.o_cpu_wr) forward_write();
+        posedge(t.rootp);
+        ++t_;
+      } while (!t.o_retire);
+    } else
+#endif
+    {
+      do {
+        clock_.low();
+        forward_write();
+        clock_.high();
+        ++t_;
+      } while (!top().o_retire);
+    }
     s.pc = top().o_dbg_ipc;
     s.tstates = static_cast<int>(t_ - s.t_before);
     describe_unit(s);
@@ -128,10 +144,10 @@ class BoardMachine final : public i8085::Machine {
     if (kind == cpu8085::RetireKind::instruction) {
       s.kind = i8085::StepKind::instruction;
       s.bytes[0] = top().o_dbg_op;
-      s.length = static_cast<std::uint8_t>(i8085::instruction_length(s.bytes[0], i8085::Mode::i8085));
+      s.length = cpu8085::opcode_table().length[s.bytes[0]];
       for (int i = 1; i < s.length; ++i)
         s.bytes[static_cast<std::size_t>(i)] = bus_.read(static_cast<std::uint16_t>(s.pc + i));
-      s.undocumented = i8085::is_undocumented_8085(s.bytes[0]);
+      s.undocumented = cpu8085::opcode_table().undocumented[s.bytes[0]];
     } else if (kind == cpu8085::RetireKind::acknowledge || kind == cpu8085::RetireKind::intr) {
       s.kind = i8085::StepKind::interrupt;
       s.irq = cpu8085::interrupt_of(top().o_dbg_irq);

@@ -63,12 +63,29 @@ class CpuMachine final : public i8085::Machine {
     s.t_before = t_;
     s.mode = i8085::Mode::i8085;
     UnitBytes u;
-    do {
-      clock_.low();
-      serve_bus(u);
-      clock_.high();
-      ++t_;
-    } while (!h_.top().o_retire);
+#if VERILATOR_VERSION_INTEGER == 5006000
+    if (clock_.direct()) {
+      // The one-eval path with the model's rising-edge function called
+      // directly (one_eval_clock.hpp): the same T-states, the loop's
+      // tests of the path hoisted out of it; the bus served only in a
+      // T-state with a strobe.
+      auto& top = h_.top();
+      clock_.posedge_loop_begin();
+      do {
+        if (top.o_rd | top.o_wr | top.o_inta) serve_bus(u);
+        Vcpu8085___024root___nba_sequent__TOP__0(top.rootp);
+        ++t_;
+      } while (!top.o_retire);
+    } else
+#endif
+    {
+      do {
+        clock_.low();
+        serve_bus(u);
+        clock_.high();
+        ++t_;
+      } while (!h_.top().o_retire);
+    }
     s.pc = h_.top().o_dbg_ipc;
     s.tstates = static_cast<int>(t_ - s.t_before);
     describe_unit(s, u);
@@ -143,14 +160,14 @@ class CpuMachine final : public i8085::Machine {
     if (kind == RetireKind::instruction) {
       s.kind = i8085::StepKind::instruction;
       s.bytes[0] = u.opcode;
-      s.length = static_cast<std::uint8_t>(i8085::instruction_length(u.opcode, i8085::Mode::i8085));
+      s.length = opcodes_.length[u.opcode];
       for (int i = 1; i < s.length; ++i) {
         // A conditional jump or call not taken does not read its high byte
         // (that is what makes it 7 / 9 T-states); the trace still shows it.
         s.bytes[static_cast<std::size_t>(i)] = i <= u.operands ? u.operand[static_cast<std::size_t>(i - 1)]
                                                                : bus_.read(static_cast<std::uint16_t>(s.pc + i));
       }
-      s.undocumented = i8085::is_undocumented_8085(u.opcode);
+      s.undocumented = opcodes_.undocumented[u.opcode];
     } else if (kind == RetireKind::acknowledge || kind == RetireKind::intr) {
       s.kind = i8085::StepKind::interrupt;
       s.irq = interrupt_of(h_.top().o_dbg_irq);
@@ -164,6 +181,7 @@ class CpuMachine final : public i8085::Machine {
   }
 
   i8085::Bus& bus_;
+  const OpcodeTable& opcodes_ = opcode_table();
   contour::tb::Harness<Vcpu8085> h_;
   OneEvalClock<Vcpu8085> clock_;
   std::uint64_t t_ = 0;

@@ -54,6 +54,11 @@ class OneEvalClock {
       : h_(h), one_eval_(kSupported && !waveform), posedge_(posedge) {}
 
   bool one_eval() const { return one_eval_; }
+  // The rising edge is the machine's posedge function alone (one eval
+  // done): a machine may then run its own loop, calling it directly with
+  // i_clk held at 1 (posedge_loop_begin()).
+  bool direct() const { return one_eval_ && posedge_ != nullptr && primed_; }
+  void posedge_loop_begin() { h_.top().i_clk = 1; }
 
   // Before the bus is served: the clock low (nothing to do on one eval).
   void low() {

@@ -124,9 +124,9 @@ fi
 mutants=(
   "cpu8085_decode.vh|PUSH fetched in 4 T instead of 6|s/(f_sss == 3'd7) | (low == 4'b0101))) |/(f_sss == 3'd7))) |/"
   "cpu8085_decode.vh|MVI r also matches MVI M (classes overlap)|s/dc_mvi_r = g0 \& sss_m \& ~ddd_m;/dc_mvi_r = g0 \& sss_m;/"
-  "cpu8085.v|LXI ends after its first operand byte|s/if (is_mem_rmw | is_lxi | is_dad | is_pop_ret/if (is_mem_rmw | is_dad | is_pop_ret/"
-  "cpu8085.v|Jcc not taken reads the high address byte too|s/if (is_jcc) seq_last = at_2 || !cond_ir(ddd);/if (is_jcc) seq_last = at_2;/"
-  "cpu8085.v|XTHL runs one cycle too many|s/if (is_xthl) seq_last = at_4;/if (is_xthl) seq_last = (mc == 3'd5);/"
+  "cpu8085.v|LXI ends after its first operand byte|s/C_LXI: last = at_2;/C_LXI: last = at_1;/"
+  "cpu8085.v|Jcc not taken reads the high address byte too|s/C_JCC: last = at_2 || !cond_ir(o_dbg_op\[5:3\]);/C_JCC: last = at_2;/"
+  "cpu8085.v|XTHL runs one cycle too many|s/last = at_4;  \/\/ XTHL/last = (mc == 3'd5);  \/\/ XTHL/"
   "cpu8085.v|write strobe also in memory reads|s/o_wr <= (o_cycle == CY_MW/o_wr <= (o_cycle == CY_MR || o_cycle == CY_MW/"
 )
 if [ "$what" = all ] || [ "$what" = mutants ]; then

@@ -28,8 +28,10 @@
 #   default jobs: lines:3 lines:4 arcs:3 covers:3 mutants:3
 #
 # Exit status 0 only when every proof holds, every cover is reached and
-# every mutant refuted. Each solver run: 4 GB of memory, TIMEOUT seconds
-# (default 2400: arcs:3:66 took 846 s of CPU after D was split in two halves).
+# every mutant refuted. Each solver run: 4 GB of memory, TIMEOUT seconds of
+# CPU (default 2400: arcs:3:66 took 611-846 s of CPU after D was split in
+# two halves) and three times that of wall time, so that a loaded machine
+# (arcs:3:66: 1842 s of wall time for 611 s of CPU) does not cut a proof.
 set -euo pipefail
 out=${1:?output directory}
 shift
@@ -40,7 +42,9 @@ core=$(cd "$here/.." && pwd)
 sources=$("$core/../filelist" "$core/interp.f" | tr '\n' ' ')
 mkdir -p "$out"
 ulimit -v 4000000
-tmo=${TIMEOUT:-2400}
+cpu=${TIMEOUT:-2400}
+ulimit -t "$cpu"
+tmo=$((3 * cpu))
 
 # aig NAME W DEFINES [FILE MUTANT]: the harness at width W flattened to
 # $out/NAME.aig, with the source FILE (relative to rtl/interp) replaced by
