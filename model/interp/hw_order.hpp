@@ -3,7 +3,8 @@
 // BLK_TO of rtl/interp/regmap.def). An arc's start magnitudes go on the
 // start quadrant's inward and outward axes, its end magnitudes on the end
 // quadrant's (K crossings away); a line's targets are |Xe|, |Ye| and its
-// starts 0 (the hardware ignores them). The one place the hosts (the
+// starts 0 (interp_core requires them 0; interp_top's wb_regs zeroes
+// them whatever the host wrote). The one place the hosts (the
 // cosimulation, the board host, the test harnesses' block writers) make
 // this choice; tests compare the pulses with the model, never with this.
 #pragma once

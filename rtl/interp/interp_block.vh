@@ -25,8 +25,9 @@ localparam integer BLK_BITS = BLK_TO + W;   // 9 + 4 W
 // The prepared block, as blk_prep writes it into the queue and interp_dp
 // loads it (blk_prep -> move_fifo -> interp_dp; meaning: interp_dp.v).
 // Two parts (interp_core queues each apart): the late part, bits
-// [PRE_TI-1:0], from blk_prep's stage 2, the early part, bits
-// [PRE_BITS-1:PRE_TI], from its stage 1.
+// [PRE_TI-1:0], from blk_prep's registers (the clock after the push),
+// the early part, bits [PRE_BITS-1:PRE_TI], from the host's block itself
+// (the push clock).
 localparam integer PRE_FLAGS = 0;                // 8 bits: interp_dp's F_* order
 localparam integer PRE_TI2 = PRE_FLAGS + 8;      // W + 2 bits: ti + 2 (arc) / ti - 2
 localparam integer PRE_SUB = PRE_TI2 + W + 2;    // W + 1 bits: SUB
