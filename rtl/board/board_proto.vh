@@ -51,10 +51,10 @@ localparam [6:0] W_INTERP_POS_X = 7'h0A;  // word address on the bus
 localparam [6:0] W_INTERP_POS_Y = 7'h0B;  // word address on the bus
 localparam [6:0] W_INTERP_MOVES = 7'h0C;  // word address on the bus
 localparam [6:0] W_INTERP_BLK_MODE = 7'h0D;  // word address on the bus
-localparam [6:0] W_INTERP_BLK_XS = 7'h0E;  // word address on the bus
-localparam [6:0] W_INTERP_BLK_YS = 7'h0F;  // word address on the bus
-localparam [6:0] W_INTERP_BLK_XE = 7'h10;  // word address on the bus
-localparam [6:0] W_INTERP_BLK_YE = 7'h11;  // word address on the bus
+localparam [6:0] W_INTERP_BLK_CI = 7'h0E;  // word address on the bus
+localparam [6:0] W_INTERP_BLK_CO = 7'h0F;  // word address on the bus
+localparam [6:0] W_INTERP_BLK_TI = 7'h10;  // word address on the bus
+localparam [6:0] W_INTERP_BLK_TO = 7'h11;  // word address on the bus
 localparam [6:0] W_INTERP_PUSH = 7'h12;  // word address on the bus
 // Window AXIS3
 localparam [6:0] W_AXIS3_ID = 7'h20;  // word address on the bus

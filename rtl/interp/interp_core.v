@@ -7,8 +7,9 @@
 // previous block's last pulse). i_abort drops the queue and the running
 // move, like a reset of the interpolator alone. A block pushed while
 // o_full is refused (nothing happens); a pushed block is in the queue
-// (o_level) at once and can be loaded three clocks later (2 preparation
-// stages, the late part's queue memory).
+// (o_level) at once and can be loaded two clocks later (blk_prep's one
+// stage, the late part's queue memory). i_blk need only be valid in the
+// clock of i_push (blk_prep keeps what it needs).
 `default_nettype none
 
 module interp_core #(
@@ -54,10 +55,10 @@ module interp_core #(
       .o_wr(p_wr), .o_wr_late(p_wr_late), .o_pre(p_pre)
   );
 
-  // The queue, in two parts: blk_prep gives a block's early fields (its
-  // stage 1, ADD and ti) a clock before the late ones (SUB, the constants,
-  // the flags, from its stage 2), and each part has its queue, written
-  // when its part comes, so no field waits in a register. Both are popped
+  // The queue, in two parts: blk_prep gives a block's early fields (the
+  // host's, ADD) in the push clock, a clock before the late ones (SUB, the
+  // constants, the flags, from its registers), and each part has its
+  // queue, written when its part comes, so no field waits in a register. Both are popped
   // together; the late queue is never ahead of the early one, so the head
   // is valid when the late queue's is. interp_block.vh orders the fields
   // so that each part is one range of the prepared block: the late part
@@ -92,10 +93,10 @@ module interp_core #(
   wire head_valid = l_valid;
   wire [PRE_BITS-1:0] head = {h_early, h_late};
 
-  // The level, the blocks in preparation, in the early queue's memory and
-  // at its head (fifo_level + p_wr), is a counter: a block counts from the
-  // clock after its push to the clock of its pop, so it changes by
-  // push_ok - pop alone (asserted equal below). A register, so no pointer
+  // The level, the blocks in the early queue's memory and at its head
+  // (fifo_level: the early part is written in the push clock), is a
+  // counter: a block counts from the clock after its push to the clock of
+  // its pop, so it changes by push_ok - pop alone (asserted equal below). A register, so no pointer
   // subtraction and no adder sits before a status read (issue 15: interp_top's
   // STATUS read, rptr -> used -> level -> the read multiplexer, ~9 ns).
   reg [QAW+1:0] level_q;
@@ -107,10 +108,10 @@ module interp_core #(
   wire [QAW+1:0] unused_level = fifo_level;
   wire [QAW:0] unused_used = mem_used;
 
-  // Full counts the blocks still in preparation (the early queue holds a
-  // block from its stage-1 clock on), like the level. It is a register:
-  // full when the blocks committed to the memory after this clock (the
-  // memory's, mem_used + p_wr = level_q - e_valid, and push_ok), not
+  // Full counts the blocks like the level (the early queue holds a block
+  // from the clock after its push on). It is a register: full when the
+  // blocks committed to the memory after this clock (the memory's,
+  // mem_used = level_q - e_valid, and push_ok), not
   // counting the one the datapath may take, fill it (never too
   // optimistic). From the level counter: no pointer subtraction (asserted
   // equal to the count from the pointers below).
@@ -147,9 +148,8 @@ module interp_core #(
   // next value, from it, is the test of the memory's count.
   always @(*) begin
     if (past_valid_f) begin
-      assert(level_q == fifo_level + {{(QAW+1){1'b0}}, p_wr});
-      assert(full_next == ({2'b00, mem_used} + {{(QAW+2){1'b0}}, p_wr} + {{(QAW+2){1'b0}}, push_ok}
-                           >= {1'b0, DEPTH}));
+      assert(level_q == fifo_level);
+      assert(full_next == ({1'b0, mem_used} + {{(QAW+1){1'b0}}, push_ok} >= DEPTH));
     end
   end
 `endif

@@ -94,24 +94,44 @@ module wb_regs #(
   localparam integer S_FEED = 0, S_LEN = 1, S_SPACE = 2, S_SETUP = 3, S_HOLD = 4, S_MODE = 5,
       S_XS = 6, S_YS = 7, S_XE = 8, S_YE = 9, S_PUSH = 10, S_WCTRL = 11, NWS = 12;
   wire [NWS-1:0] wsel = {NWS{wr1_q}} &
-      {wadr == A_CTRL, wadr == A_PUSH, wadr == A_BLK_YE, wadr == A_BLK_XE,
-       wadr == A_BLK_YS, wadr == A_BLK_XS, wadr == A_BLK_MODE, wadr == A_DIR_HOLD,
+      {wadr == A_CTRL, wadr == A_PUSH, wadr == A_BLK_TO, wadr == A_BLK_TI,
+       wadr == A_BLK_CO, wadr == A_BLK_CI, wadr == A_BLK_MODE, wadr == A_DIR_HOLD,
        wadr == A_DIR_SETUP, wadr == A_STEP_SPACE, wadr == A_STEP_LEN, wadr == A_FEED};
 
   reg [8:0] mode_q;
   reg [W-1:0] xs_q, ys_q, xe_q, ye_q;
   reg reject_q;
-  // The staged block: the BLK_MODE register's fields and the magnitudes.
-  assign o_blk[BLK_ARC] = mode_q[BLK_MODE_ARC];
+  // The staged block: the BLK_MODE register's fields and the magnitudes,
+  // the fields the kind does not use zeroed (interp_core takes them as 0:
+  // a line's CI, CO, Q, K, an arc's SXN, SYN; regmap.def says the host's
+  // are ignored). The mode bits are zeroed as they are written (the
+  // register is write only), the magnitudes here (a write of BLK_MODE may
+  // come after theirs).
+  wire arc_q = mode_q[BLK_MODE_ARC];
+  assign o_blk[BLK_ARC] = arc_q;
   assign o_blk[BLK_CW] = mode_q[BLK_MODE_CW];
   assign o_blk[BLK_SXN] = mode_q[BLK_MODE_SXN];
   assign o_blk[BLK_SYN] = mode_q[BLK_MODE_SYN];
   assign o_blk[BLK_Q +: 2] = mode_q[BLK_MODE_Q +: 2];
   assign o_blk[BLK_K +: 3] = mode_q[BLK_MODE_K +: 3];
-  assign o_blk[BLK_XS +: W] = xs_q;
-  assign o_blk[BLK_YS +: W] = ys_q;
-  assign o_blk[BLK_XE +: W] = xe_q;
-  assign o_blk[BLK_YE +: W] = ye_q;
+  assign o_blk[BLK_CI +: W] = arc_q ? xs_q : {W{1'b0}};
+  assign o_blk[BLK_CO +: W] = arc_q ? ys_q : {W{1'b0}};
+  assign o_blk[BLK_TI +: W] = xe_q;
+  assign o_blk[BLK_TO +: W] = ye_q;
+
+  // The BLK_MODE bits a kind uses: a line its signs, an arc its sense,
+  // quadrant and crossings (the kind bit both).
+  function automatic [8:0] mode_used(input arc);
+    begin
+      mode_used = 9'd0;
+      mode_used[BLK_MODE_ARC] = 1'b1;
+      mode_used[BLK_MODE_CW] = 1'b1;
+      mode_used[BLK_MODE_SXN] = ~arc;
+      mode_used[BLK_MODE_SYN] = ~arc;
+      mode_used[BLK_MODE_Q +: 2] = {2{arc}};
+      mode_used[BLK_MODE_K +: 3] = {3{arc}};
+    end
+  endfunction
 
   // Writable registers.
   always @(posedge i_clk) begin
@@ -123,10 +143,10 @@ module wb_regs #(
       o_setup <= R_DIR_SETUP[TW-1:0];
       o_hold <= R_DIR_HOLD[TW-1:0];
       mode_q <= R_BLK_MODE[8:0];
-      xs_q <= R_BLK_XS[W-1:0];
-      ys_q <= R_BLK_YS[W-1:0];
-      xe_q <= R_BLK_XE[W-1:0];
-      ye_q <= R_BLK_YE[W-1:0];
+      xs_q <= R_BLK_CI[W-1:0];
+      ys_q <= R_BLK_CO[W-1:0];
+      xe_q <= R_BLK_TI[W-1:0];
+      ye_q <= R_BLK_TO[W-1:0];
     end else begin
       if (wsel[S_WCTRL]) o_src <= i_wb_dat[CTRL_SRC +: 2];
       if (wsel[S_FEED]) o_feed <= i_wb_dat;
@@ -134,7 +154,7 @@ module wb_regs #(
       if (wsel[S_SPACE]) o_space <= i_wb_dat[TW-1:0];
       if (wsel[S_SETUP]) o_setup <= i_wb_dat[TW-1:0];
       if (wsel[S_HOLD]) o_hold <= i_wb_dat[TW-1:0];
-      if (wsel[S_MODE]) mode_q <= i_wb_dat[8:0];
+      if (wsel[S_MODE]) mode_q <= i_wb_dat[8:0] & mode_used(i_wb_dat[BLK_MODE_ARC]);
       if (wsel[S_XS]) xs_q <= i_wb_dat[W-1:0];
       if (wsel[S_YS]) ys_q <= i_wb_dat[W-1:0];
       if (wsel[S_XE]) xe_q <= i_wb_dat[W-1:0];
@@ -252,12 +272,17 @@ module wb_regs #(
         assert (f_past2 && $past(f_start & i_wb_we & (adr == A_FEED), 2));
       if (f_past2 && !$past(i_rst, 2) && $past(f_start & i_wb_we & (adr == A_FEED), 2))
         assert (o_feed == $past(i_wb_dat, 2));
-      if (xs_q != $past(xs_q)) assert (f_past2 && $past(f_start & i_wb_we & (adr == A_BLK_XS), 2));
+      if (xs_q != $past(xs_q)) assert (f_past2 && $past(f_start & i_wb_we & (adr == A_BLK_CI), 2));
       if (o_src != $past(o_src)) assert (f_past2 && $past(f_start & i_wb_we & (adr == A_CTRL), 2));
       // A PUSH write pushes once, unless the queue is full in the clock
       // after it starts (then REJECT is set instead).
       assert (o_push == (f_past2 && !$past(i_rst, 2) && $past(f_wr_push, 2) && !$past(i_full)));
       if (f_past2 && !$past(i_rst, 2) && $past(f_wr_push, 2) && $past(i_full)) assert (reject_q);
+      // The staged block has a line's CI, CO, Q, K and an arc's SXN, SYN
+      // zero, whatever the host wrote.
+      if (!o_blk[BLK_ARC]) assert (o_blk[BLK_CI +: W] == 0 && o_blk[BLK_CO +: W] == 0 &&
+                                   o_blk[BLK_Q +: 2] == 0 && o_blk[BLK_K +: 3] == 0);
+      if (o_blk[BLK_ARC]) assert (!o_blk[BLK_SXN] && !o_blk[BLK_SYN]);
       // ABORT and CLEAR only from a CTRL write.
       if (o_abort | o_clear) assert (f_past2 && $past(f_start & i_wb_we & (adr == A_CTRL), 2));
     end

@@ -11,6 +11,7 @@
 
 #include "Vcosim_board.h"
 #include "Vcosim_interp.h"
+#include "interp/hw_order.hpp"
 #include "interp_regs.h"
 #include "sw8085/interp/host.hpp"
 #include "sim/cli/numbers.hpp"
@@ -312,14 +313,18 @@ void stage_move(const Move& m, const std::function<void(std::uint32_t, std::uint
     mode = INTERP_BLK_MODE_ARC_MASK | (m.sense == Sense::CW ? INTERP_BLK_MODE_CW_MASK : 0u) |
            static_cast<std::uint32_t>(plan.q_start) << INTERP_BLK_MODE_Q_LSB |
            static_cast<std::uint32_t>(plan.crossings) << INTERP_BLK_MODE_K_LSB;
-    write(INTERP_REG_BLK_XS, mag(m.xs));
-    write(INTERP_REG_BLK_YS, mag(m.ys));
+    const InOutMagnitudes io =
+        inout_order(true, m.sense, plan.q_start, plan.crossings, mag(m.xs), mag(m.ys), mag(m.xe), mag(m.ye));
+    write(INTERP_REG_BLK_CI, static_cast<std::uint32_t>(io.ci));
+    write(INTERP_REG_BLK_CO, static_cast<std::uint32_t>(io.co));
+    write(INTERP_REG_BLK_TI, static_cast<std::uint32_t>(io.ti));
+    write(INTERP_REG_BLK_TO, static_cast<std::uint32_t>(io.to));
   } else {
     mode = (m.xe < 0 ? INTERP_BLK_MODE_SXN_MASK : 0u) | (m.ye < 0 ? INTERP_BLK_MODE_SYN_MASK : 0u);
+    write(INTERP_REG_BLK_TI, mag(m.xe));  // a line: |Xe|, |Ye| (inout_order's line case)
+    write(INTERP_REG_BLK_TO, mag(m.ye));
   }
   write(INTERP_REG_BLK_MODE, mode);
-  write(INTERP_REG_BLK_XE, mag(m.xe));
-  write(INTERP_REG_BLK_YE, mag(m.ye));
 }
 
 }  // namespace

@@ -192,8 +192,8 @@ TEST(BoardFrames, RepliesCarryInterpTopsPositionsWhenItHasThePins) {
   auto wr = [](std::uint8_t w, std::uint32_t d) { return Op{true, w, d}; };
   Reply r = ask(sim, 0,
                 {wr(BOARD_LINK_CTRL, BOARD_LINK_CTRL_ENABLE_MASK | BOARD_LINK_CTRL_PINS_MASK),
-                 wr(BOARD_INTERP_BLK_MODE, BOARD_INTERP_BLK_MODE_SXN_MASK), wr(BOARD_INTERP_BLK_XE, 300),
-                 wr(BOARD_INTERP_BLK_YE, 200), wr(BOARD_INTERP_PUSH, 0)});
+                 wr(BOARD_INTERP_BLK_MODE, BOARD_INTERP_BLK_MODE_SXN_MASK), wr(BOARD_INTERP_BLK_TI, 300),
+                 wr(BOARD_INTERP_BLK_TO, 200), wr(BOARD_INTERP_PUSH, 0)});
   ASSERT_EQ(r.status, BOARD_ERR_OK);
   r = ask(sim, 1, {wr(BOARD_INTERP_FEED, 1u << 26), wr(BOARD_INTERP_CTRL, 2)});  // a command every 64 clocks
   ASSERT_EQ(r.status, BOARD_ERR_OK);

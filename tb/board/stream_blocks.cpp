@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "interp/circular.hpp"
+#include "interp/hw_order.hpp"
 
 namespace contour::board {
 
@@ -307,9 +308,15 @@ std::vector<Op> block_ops(const HwBlock& b) {
       (std::uint32_t(!b.arc && b.xe < 0) << BOARD_INTERP_BLK_MODE_SXN_LSB) |
       (std::uint32_t(!b.arc && b.ye < 0) << BOARD_INTERP_BLK_MODE_SYN_LSB) |
       (std::uint32_t(b.q) << BOARD_INTERP_BLK_MODE_Q_LSB) | (std::uint32_t(b.k) << BOARD_INTERP_BLK_MODE_K_LSB);
-  auto mag = [](std::int64_t v) { return static_cast<std::uint32_t>(std::llabs(v)); };
-  return {wr(BOARD_INTERP_BLK_MODE, mode), wr(BOARD_INTERP_BLK_XS, mag(b.xs)), wr(BOARD_INTERP_BLK_YS, mag(b.ys)),
-          wr(BOARD_INTERP_BLK_XE, mag(b.xe)), wr(BOARD_INTERP_BLK_YE, mag(b.ye)), wr(BOARD_INTERP_PUSH, 0)};
+  auto mag = [](std::int64_t v) { return static_cast<std::uint64_t>(std::llabs(v)); };
+  const InOutMagnitudes io = inout_order(b.arc, b.cw ? Sense::CW : Sense::CCW, b.q, b.k, mag(b.xs), mag(b.ys),
+                                         mag(b.xe), mag(b.ye));
+  return {wr(BOARD_INTERP_BLK_MODE, mode),
+          wr(BOARD_INTERP_BLK_CI, static_cast<std::uint32_t>(io.ci)),
+          wr(BOARD_INTERP_BLK_CO, static_cast<std::uint32_t>(io.co)),
+          wr(BOARD_INTERP_BLK_TI, static_cast<std::uint32_t>(io.ti)),
+          wr(BOARD_INTERP_BLK_TO, static_cast<std::uint32_t>(io.to)),
+          wr(BOARD_INTERP_PUSH, 0)};
 }
 
 std::uint32_t feed_word(double rate, double clock_hz) {

@@ -11,6 +11,7 @@
 
 #include "interp/circular.hpp"
 #include "interp/engine.hpp"
+#include "interp/hw_order.hpp"
 
 namespace contour::rtl {
 
@@ -18,7 +19,7 @@ namespace contour::rtl {
 struct Block {
   bool arc = false, cw = false, sxn = false, syn = false;
   std::uint8_t q = 0, k = 0;
-  std::uint64_t xs = 0, ys = 0, xe = 0, ye = 0;  // magnitudes
+  std::uint64_t ci = 0, co = 0, ti = 0, to = 0;  // magnitudes, inward/outward order (inout_order)
 };
 
 // The field offsets of interp_core's i_blk, as functions of W: the BLK_*
@@ -28,11 +29,11 @@ namespace blk {
 constexpr unsigned kArc = 0, kCw = 1, kSxn = 2, kSyn = 3;
 constexpr unsigned kQ = 4;  // 2 bits
 constexpr unsigned kK = 6;  // 3 bits
-constexpr unsigned xs(unsigned) { return 9; }  // W bits each
-constexpr unsigned ys(unsigned w) { return xs(w) + w; }
-constexpr unsigned xe(unsigned w) { return ys(w) + w; }
-constexpr unsigned ye(unsigned w) { return xe(w) + w; }
-constexpr unsigned bits(unsigned w) { return ye(w) + w; }
+constexpr unsigned ci(unsigned) { return 9; }  // W bits each
+constexpr unsigned co(unsigned w) { return ci(w) + w; }
+constexpr unsigned ti(unsigned w) { return co(w) + w; }
+constexpr unsigned to(unsigned w) { return ti(w) + w; }
+constexpr unsigned bits(unsigned w) { return to(w) + w; }
 }  // namespace blk
 
 // Sets bits [lsb, lsb + width) of a Verilated port to `value`: an integer
@@ -67,14 +68,15 @@ Block make_block(const Move& m) {
     b.cw = m.sense == Sense::CW;
     b.q = static_cast<std::uint8_t>(plan.q_start);
     b.k = static_cast<std::uint8_t>(plan.crossings);
-    b.xs = mag(m.xs);
-    b.ys = mag(m.ys);
   } else {
     b.sxn = m.xe < 0;
     b.syn = m.ye < 0;
   }
-  b.xe = mag(m.xe);
-  b.ye = mag(m.ye);
+  const InOutMagnitudes io = inout_order(b.arc, m.sense, b.q, b.k, mag(m.xs), mag(m.ys), mag(m.xe), mag(m.ye));
+  b.ci = io.ci;
+  b.co = io.co;
+  b.ti = io.ti;
+  b.to = io.to;
   return b;
 }
 
@@ -87,10 +89,10 @@ void pack_block(P& port, unsigned w, const Block& b) {
   set_bits(port, blk::kSyn, 1, b.syn);
   set_bits(port, blk::kQ, 2, b.q);
   set_bits(port, blk::kK, 3, b.k);
-  set_bits(port, blk::xs(w), w, b.xs);
-  set_bits(port, blk::ys(w), w, b.ys);
-  set_bits(port, blk::xe(w), w, b.xe);
-  set_bits(port, blk::ye(w), w, b.ye);
+  set_bits(port, blk::ci(w), w, b.ci);
+  set_bits(port, blk::co(w), w, b.co);
+  set_bits(port, blk::ti(w), w, b.ti);
+  set_bits(port, blk::to(w), w, b.to);
 }
 
 }  // namespace contour::rtl

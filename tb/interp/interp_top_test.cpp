@@ -170,10 +170,30 @@ class TopHarness : public tb::Harness<Vinterp_top> {
                                (std::uint32_t(b.q) << INTERP_BLK_MODE_Q_LSB) |
                                (std::uint32_t(b.k) << INTERP_BLK_MODE_K_LSB);
     write(INTERP_REG_BLK_MODE, mode);
-    write(INTERP_REG_BLK_XS, std::uint32_t(b.xs));
-    write(INTERP_REG_BLK_YS, std::uint32_t(b.ys));
-    write(INTERP_REG_BLK_XE, std::uint32_t(b.xe));
-    write(INTERP_REG_BLK_YE, std::uint32_t(b.ye));
+    write(INTERP_REG_BLK_CI, std::uint32_t(b.ci));
+    write(INTERP_REG_BLK_CO, std::uint32_t(b.co));
+    write(INTERP_REG_BLK_TI, std::uint32_t(b.ti));
+    write(INTERP_REG_BLK_TO, std::uint32_t(b.to));
+    write(INTERP_REG_PUSH, 1);
+  }
+  // The same, but as a host may by the register map: a line's CI, CO
+  // (ignored) left as the previous block wrote them and its quadrant and
+  // crossings bits all ones, an arc's sign bits both set (ignored too).
+  void push_leaving_unused(const Move& m) {
+    const rtl::Block b = rtl::make_block<24>(m);
+    const std::uint32_t mode =
+        b.arc ? INTERP_BLK_MODE_ARC_MASK | (b.cw << INTERP_BLK_MODE_CW_LSB) | INTERP_BLK_MODE_SXN_MASK |
+                    INTERP_BLK_MODE_SYN_MASK | (std::uint32_t(b.q) << INTERP_BLK_MODE_Q_LSB) |
+                    (std::uint32_t(b.k) << INTERP_BLK_MODE_K_LSB)
+              : (b.sxn << INTERP_BLK_MODE_SXN_LSB) | (b.syn << INTERP_BLK_MODE_SYN_LSB) | INTERP_BLK_MODE_Q_MASK |
+                    INTERP_BLK_MODE_K_MASK;
+    write(INTERP_REG_BLK_MODE, mode);
+    if (b.arc) {
+      write(INTERP_REG_BLK_CI, std::uint32_t(b.ci));
+      write(INTERP_REG_BLK_CO, std::uint32_t(b.co));
+    }
+    write(INTERP_REG_BLK_TI, std::uint32_t(b.ti));
+    write(INTERP_REG_BLK_TO, std::uint32_t(b.to));
     write(INTERP_REG_PUSH, 1);
   }
 
@@ -250,9 +270,9 @@ std::uint32_t status(TopHarness& h) { return h.read(INTERP_REG_STATUS); }
 // Returns the busy clocks and core pulses counted from the command start.
 std::pair<std::uint64_t, std::uint64_t> run_and_check(TopHarness& h, const std::vector<Move>& moves,
                                                       std::uint32_t src, std::uint32_t feed,
-                                                      std::uint64_t max_clocks) {
+                                                      std::uint64_t max_clocks, bool leave_unused = false) {
   h.write(INTERP_REG_FEED, feed);
-  for (const Move& m : moves) h.push(m);
+  for (const Move& m : moves) leave_unused ? h.push_leaving_unused(m) : h.push(m);
   h.write(INTERP_REG_CTRL, src << INTERP_CTRL_SRC_LSB);
   const std::uint64_t busy0 = h.busy_cycles, pulses0 = h.core_pulses;
   h.run_until_idle(max_clocks);
@@ -295,8 +315,8 @@ TEST(InterpTop, RegistersReadAndWrite) {
   // whatever was written (what a write does is checked by the moves, the
   // timing monitor and the feed rates of the tests below).
   for (std::uint32_t adr : {INTERP_REG_FEED, INTERP_REG_STEP_LEN, INTERP_REG_STEP_SPACE, INTERP_REG_DIR_SETUP,
-                            INTERP_REG_DIR_HOLD, INTERP_REG_BLK_MODE, INTERP_REG_BLK_XS, INTERP_REG_BLK_YS,
-                            INTERP_REG_BLK_XE, INTERP_REG_BLK_YE, INTERP_REG_PUSH}) {
+                            INTERP_REG_DIR_HOLD, INTERP_REG_BLK_MODE, INTERP_REG_BLK_CI, INTERP_REG_BLK_CO,
+                            INTERP_REG_BLK_TI, INTERP_REG_BLK_TO, INTERP_REG_PUSH}) {
     EXPECT_EQ(h.read(adr), 0u) << "register 0x" << std::hex << adr << " after reset";
     if (adr != INTERP_REG_PUSH) h.write(adr, 0xFFFFFFFFu);
     EXPECT_EQ(h.read(adr), 0u) << "register 0x" << std::hex << adr;
@@ -339,10 +359,10 @@ TEST(InterpTop, BackToBackAccessesHoldingTheStrobe) {
       {INTERP_REG_CTRL, true, 0},
       {INTERP_REG_CTRL, false, 0},
       {INTERP_REG_BLK_MODE, true, mode},
-      {INTERP_REG_BLK_XS, true, std::uint32_t(b.xs)},
-      {INTERP_REG_BLK_YS, true, std::uint32_t(b.ys)},
-      {INTERP_REG_BLK_XE, true, std::uint32_t(b.xe)},
-      {INTERP_REG_BLK_YE, true, std::uint32_t(b.ye)},
+      {INTERP_REG_BLK_CI, true, std::uint32_t(b.ci)},
+      {INTERP_REG_BLK_CO, true, std::uint32_t(b.co)},
+      {INTERP_REG_BLK_TI, true, std::uint32_t(b.ti)},
+      {INTERP_REG_BLK_TO, true, std::uint32_t(b.to)},
       {INTERP_REG_PUSH, true, 1},
       {INTERP_REG_PUSH, true, 1},
       {INTERP_REG_MOVES, false, 0},
@@ -406,6 +426,18 @@ TEST(InterpTop, FeedGeneratorMovesWithinTiming) {
   const std::uint32_t s = status(h);
   EXPECT_FALSE(s & INTERP_STATUS_OVERRUN_MASK);
   EXPECT_EQ(h.read(INTERP_REG_OVR_COUNT), 0u);
+}
+
+// The fields a kind does not use are ignored (regmap.def), whatever the
+// host leaves in them: lines after arcs with CI, CO not written (nonzero
+// from the arc) and Q, K all ones; arcs with SXN, SYN set (wb_regs zeroes
+// them; interp_core requires them zero).
+TEST(InterpTop, UnusedFieldsOfABlockAreIgnored) {
+  TopHarness h;
+  run_and_check(h,
+                {Move::arc(30, 0, 0, 30, Sense::CCW), Move::line(40, -25), Move::arc(-20, 9, 9, -20, Sense::CW),
+                 Move::line(-7, 9), Move::arc(0, -17, 17, 0, Sense::CCW), Move::line(0, 12), Move::line(5, 0)},
+                2, 0x10000000u, 400000, true);
 }
 
 // The command source's clock enable (the board's time scale, its feed

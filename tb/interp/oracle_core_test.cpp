@@ -27,10 +27,14 @@ Block oracle_block(const oracle::ArcExpect& a, std::int64_t xs, std::int64_t ys,
   b.cw = cw;
   b.q = static_cast<std::uint8_t>(a.q_start);
   b.k = static_cast<std::uint8_t>(a.k);
-  b.xs = static_cast<std::uint64_t>(oracle::mag(xs));
-  b.ys = static_cast<std::uint64_t>(oracle::mag(ys));
-  b.xe = static_cast<std::uint64_t>(oracle::mag(xe));
-  b.ye = static_cast<std::uint64_t>(oracle::mag(ye));
+  const InOutMagnitudes io =
+      inout_order(true, cw ? Sense::CW : Sense::CCW, a.q_start, a.k, static_cast<std::uint64_t>(oracle::mag(xs)),
+                  static_cast<std::uint64_t>(oracle::mag(ys)), static_cast<std::uint64_t>(oracle::mag(xe)),
+                  static_cast<std::uint64_t>(oracle::mag(ye)));
+  b.ci = io.ci;
+  b.co = io.co;
+  b.ti = io.ti;
+  b.to = io.to;
   return b;
 }
 

@@ -135,18 +135,23 @@ module interp_formal #(
   wire [2:0] level;
 
   // The block as the host writes it: kind, sense, signs, start quadrant,
-  // crossings, magnitudes.
+  // crossings, magnitudes (arc: in inward/outward order, the start's by
+  // the start quadrant, the end's by the end quadrant; line: 0, 0, |xe|,
+  // |ye|).
+  wire in_x_s = ~qs[0] ^ f_cw;
   wire [BLK_BITS-1:0] blk;
   assign blk[BLK_ARC] = f_arc;
   assign blk[BLK_CW] = f_cw;
-  assign blk[BLK_SXN] = (f_xe < 0);
-  assign blk[BLK_SYN] = (f_ye < 0);
-  assign blk[BLK_Q +: 2] = qs;
-  assign blk[BLK_K +: 3] = k_start;
-  assign blk[BLK_XS +: W] = axs[W-1:0];
-  assign blk[BLK_YS +: W] = ays[W-1:0];
-  assign blk[BLK_XE +: W] = axe[W-1:0];
-  assign blk[BLK_YE +: W] = aye[W-1:0];
+  // The fields a kind does not use are 0, as interp_core requires (a
+  // line's CI, CO, Q, K, an arc's SXN, SYN; wb_regs zeroes them).
+  assign blk[BLK_SXN] = !f_arc && (f_xe < 0);
+  assign blk[BLK_SYN] = !f_arc && (f_ye < 0);
+  assign blk[BLK_Q +: 2] = f_arc ? qs : 2'd0;
+  assign blk[BLK_K +: 3] = f_arc ? k_start : 3'd0;
+  assign blk[BLK_CI +: W] = !f_arc ? {W{1'b0}} : in_x_s ? axs[W-1:0] : ays[W-1:0];
+  assign blk[BLK_CO +: W] = !f_arc ? {W{1'b0}} : in_x_s ? ays[W-1:0] : axs[W-1:0];
+  assign blk[BLK_TI +: W] = (f_arc && !in_x_e) ? aye[W-1:0] : axe[W-1:0];
+  assign blk[BLK_TO +: W] = (f_arc && !in_x_e) ? axe[W-1:0] : aye[W-1:0];
 
   interp_core #(.W(W), .QAW(1)) dut (
       .i_clk(i_clk), .i_rst(rst), .i_abort(1'b0), .i_cmd(cmd),

@@ -2,7 +2,9 @@
 # Formal proof of wb_regs' `ifdef FORMAL properties (the Wishbone slave of
 # interp_top: ACK two clocks after the access starts and only then, the
 # read word of the clock before ACK, a write landing once with the
-# access's data, PUSH / REJECT / ABORT / CLEAR only from their writes),
+# access's data, PUSH / REJECT / ABORT / CLEAR only from their writes,
+# the staged block's unused fields zero: a line's CI, CO, Q, K, an arc's
+# SXN, SYN),
 # for any master that keeps to Wishbone B4 classic and any status inputs.
 # wb_regs is flattened to an AIGER model by yosys (W = 3, QAW = 2, TW = 2:
 # the widths change no control) and proved unbounded by ABC's PDR.
@@ -63,6 +65,8 @@ mutants=(
   "a write lands in the ACK clock (the master may have moved on)|s/wire \[NWS-1:0\] wsel = {NWS{wr1_q}} \&/wire [NWS-1:0] wsel = {NWS{o_wb_ack \& i_wb_we}} \&/"
   "a PUSH into a full queue|s/o_push <= wsel\[S_PUSH\] \& ~i_full;/o_push <= wsel[S_PUSH];/"
   "DAT_O loaded as the access starts (the selects of the clock before)|s/always @(posedge i_clk) o_wb_dat <= rdata;/always @(posedge i_clk) if (acc) o_wb_dat <= rdata;/"
+  "a line's staged CI not zeroed|s/assign o_blk\[BLK_CI +: W\] = arc_q ? xs_q : {W{1'b0}};/assign o_blk[BLK_CI +: W] = xs_q;/"
+  "an arc's SXN kept|s/mode_used\[BLK_MODE_SXN\] = ~arc;/mode_used[BLK_MODE_SXN] = 1'b1;/"
 )
 n=0
 for m in "${mutants[@]}"; do

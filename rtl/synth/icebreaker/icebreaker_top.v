@@ -48,19 +48,19 @@ module icebreaker_top (
       5'd5: begin adr = A_CTRL; dat = 32'd2 << CTRL_SRC; end
       // Full circle, R = 1000, CCW from (1000, 0): Q1, 4 crossings.
       5'd6: begin adr = A_BLK_MODE; dat = (32'd1 << BLK_MODE_ARC) | (32'd4 << BLK_MODE_K); end
-      5'd7: begin adr = A_BLK_XS; dat = 32'd1000; end
-      5'd8: begin adr = A_BLK_YS; dat = 32'd0; end
-      5'd9: begin adr = A_BLK_XE; dat = 32'd1000; end
-      5'd10: begin adr = A_BLK_YE; dat = 32'd0; end
+      5'd7: begin adr = A_BLK_CI; dat = 32'd1000; end
+      5'd8: begin adr = A_BLK_CO; dat = 32'd0; end
+      5'd9: begin adr = A_BLK_TI; dat = 32'd1000; end
+      5'd10: begin adr = A_BLK_TO; dat = 32'd0; end
       5'd11: begin adr = A_PUSH; dat = 32'd1; end
       // Line (-1000, +1000), then (+1000, -1000): back to the start.
       5'd12: begin adr = A_BLK_MODE; dat = 32'd1 << BLK_MODE_SXN; end
-      5'd13: begin adr = A_BLK_XE; dat = 32'd1000; end
-      5'd14: begin adr = A_BLK_YE; dat = 32'd1000; end
+      5'd13: begin adr = A_BLK_TI; dat = 32'd1000; end
+      5'd14: begin adr = A_BLK_TO; dat = 32'd1000; end
       5'd15: begin adr = A_PUSH; dat = 32'd1; end
       5'd16: begin adr = A_BLK_MODE; dat = 32'd1 << BLK_MODE_SYN; end
-      5'd17: begin adr = A_BLK_XE; dat = 32'd1000; end
-      5'd18: begin adr = A_BLK_YE; dat = 32'd1000; end
+      5'd17: begin adr = A_BLK_TI; dat = 32'd1000; end
+      5'd18: begin adr = A_BLK_TO; dat = 32'd1000; end
       default: begin adr = A_PUSH; dat = 32'd1; end
     endcase
   end
