@@ -282,16 +282,16 @@ TEST(InterpCoreW24, RandomArcsAndExtremes) {
 // Blocks queued ahead run back to back: with the command held high every
 // clock from the first pulse to the last carries a pulse, and the pulses
 // are the concatenation of the model's.
-TEST(InterpCore, BackToBackBlocksHaveNoGap) {
-  H8 h;
-  const std::vector<Move> moves{Move::line(6, 5),   Move::arc(6, 0, 0, 6, Sense::CCW), Move::line(-3, 7),
-                                Move::line(1, 0),   Move::arc(5, 5, 5, 5, Sense::CW),  Move::line(0, -1),
-                                Move::arc(2, 1, -2, 1, Sense::CCW), Move::line(255, -255)};
+// Queued blocks, run with the command held high: the model's pulses and
+// states, the last pulse of each block flagged, no idle clock between.
+template <class H, int W>
+void expect_back_to_back(const std::vector<Move>& moves) {
+  H h;
   std::vector<Pulse> want;
   std::vector<State> want_state;
   std::vector<bool> want_last;
   for (const Move& m : moves) {
-    const RunResult r = run_model<8>(m);
+    const RunResult r = run_model<W>(m);
     for (std::size_t i = 0; i < r.steps.size(); ++i) {
       want.push_back(r.steps[i].pulse);
       State s = r.steps[i].state;
@@ -300,7 +300,7 @@ TEST(InterpCore, BackToBackBlocksHaveNoGap) {
       want_last.push_back(i + 1 == r.steps.size());
     }
   }
-  for (const Move& m : moves) ASSERT_TRUE(h.push(make_block<8>(m)));
+  for (const Move& m : moves) ASSERT_TRUE(h.push(make_block<W>(m)));
   h.top().i_cmd = 1;
   std::vector<rtl::Observed> got;
   std::uint64_t first = 0, gaps = 0;
@@ -329,6 +329,21 @@ TEST(InterpCore, BackToBackBlocksHaveNoGap) {
   h.tick();
   EXPECT_FALSE(h.top().o_busy);
   EXPECT_FALSE(h.top().o_pulse);
+}
+
+TEST(InterpCore, BackToBackBlocksHaveNoGap) {
+  expect_back_to_back<H8, 8>({Move::line(6, 5), Move::arc(6, 0, 0, 6, Sense::CCW), Move::line(-3, 7),
+                              Move::line(1, 0), Move::arc(5, 5, 5, 5, Sense::CW), Move::line(0, -1),
+                              Move::arc(2, 1, -2, 1, Sense::CCW), Move::line(255, -255)});
+}
+
+// The same at W = 24 (the width of the synthesized core): arcs of a
+// radius near 2^24 whose magnitudes use the high bits, one crossing the
+// X axis, between short lines.
+TEST(InterpCoreW24, BackToBackBlocksHaveNoGap) {
+  expect_back_to_back<H24, 24>({walked_arc(16000000, 5, Sense::CCW, 3000), Move::line(0, 1),
+                                walked_arc(-16000000, 1000, Sense::CCW, 3000), Move::line(-2999, 3000),
+                                Move::arc(3, 4, -4, 3, Sense::CCW), Move::line(-1, 0)});
 }
 
 // Command low: nothing moves; command high again: the run continues where
