@@ -92,14 +92,14 @@ module wb_regs #(
 
   // The write enables of clock 1, one a writable word (one-hot or zero).
   localparam integer S_FEED = 0, S_LEN = 1, S_SPACE = 2, S_SETUP = 3, S_HOLD = 4, S_MODE = 5,
-      S_XS = 6, S_YS = 7, S_XE = 8, S_YE = 9, S_PUSH = 10, S_WCTRL = 11, NWS = 12;
+      S_CI = 6, S_CO = 7, S_TI = 8, S_TO = 9, S_PUSH = 10, S_WCTRL = 11, NWS = 12;
   wire [NWS-1:0] wsel = {NWS{wr1_q}} &
       {wadr == A_CTRL, wadr == A_PUSH, wadr == A_BLK_TO, wadr == A_BLK_TI,
        wadr == A_BLK_CO, wadr == A_BLK_CI, wadr == A_BLK_MODE, wadr == A_DIR_HOLD,
        wadr == A_DIR_SETUP, wadr == A_STEP_SPACE, wadr == A_STEP_LEN, wadr == A_FEED};
 
   reg [8:0] mode_q;
-  reg [W-1:0] xs_q, ys_q, xe_q, ye_q;
+  reg [W-1:0] ci_q, co_q, ti_q, to_q;
   reg reject_q;
   // The staged block: the BLK_MODE register's fields and the magnitudes,
   // the fields the kind does not use zeroed (interp_core takes them as 0:
@@ -114,10 +114,10 @@ module wb_regs #(
   assign o_blk[BLK_SYN] = mode_q[BLK_MODE_SYN];
   assign o_blk[BLK_Q +: 2] = mode_q[BLK_MODE_Q +: 2];
   assign o_blk[BLK_K +: 3] = mode_q[BLK_MODE_K +: 3];
-  assign o_blk[BLK_CI +: W] = arc_q ? xs_q : {W{1'b0}};
-  assign o_blk[BLK_CO +: W] = arc_q ? ys_q : {W{1'b0}};
-  assign o_blk[BLK_TI +: W] = xe_q;
-  assign o_blk[BLK_TO +: W] = ye_q;
+  assign o_blk[BLK_CI +: W] = arc_q ? ci_q : {W{1'b0}};
+  assign o_blk[BLK_CO +: W] = arc_q ? co_q : {W{1'b0}};
+  assign o_blk[BLK_TI +: W] = ti_q;
+  assign o_blk[BLK_TO +: W] = to_q;
 
   // The BLK_MODE bits a kind uses: a line its signs, an arc its sense,
   // quadrant and crossings (the kind bit both).
@@ -143,10 +143,10 @@ module wb_regs #(
       o_setup <= R_DIR_SETUP[TW-1:0];
       o_hold <= R_DIR_HOLD[TW-1:0];
       mode_q <= R_BLK_MODE[8:0];
-      xs_q <= R_BLK_CI[W-1:0];
-      ys_q <= R_BLK_CO[W-1:0];
-      xe_q <= R_BLK_TI[W-1:0];
-      ye_q <= R_BLK_TO[W-1:0];
+      ci_q <= R_BLK_CI[W-1:0];
+      co_q <= R_BLK_CO[W-1:0];
+      ti_q <= R_BLK_TI[W-1:0];
+      to_q <= R_BLK_TO[W-1:0];
     end else begin
       if (wsel[S_WCTRL]) o_src <= i_wb_dat[CTRL_SRC +: 2];
       if (wsel[S_FEED]) o_feed <= i_wb_dat;
@@ -155,10 +155,10 @@ module wb_regs #(
       if (wsel[S_SETUP]) o_setup <= i_wb_dat[TW-1:0];
       if (wsel[S_HOLD]) o_hold <= i_wb_dat[TW-1:0];
       if (wsel[S_MODE]) mode_q <= i_wb_dat[8:0] & mode_used(i_wb_dat[BLK_MODE_ARC]);
-      if (wsel[S_XS]) xs_q <= i_wb_dat[W-1:0];
-      if (wsel[S_YS]) ys_q <= i_wb_dat[W-1:0];
-      if (wsel[S_XE]) xe_q <= i_wb_dat[W-1:0];
-      if (wsel[S_YE]) ye_q <= i_wb_dat[W-1:0];
+      if (wsel[S_CI]) ci_q <= i_wb_dat[W-1:0];
+      if (wsel[S_CO]) co_q <= i_wb_dat[W-1:0];
+      if (wsel[S_TI]) ti_q <= i_wb_dat[W-1:0];
+      if (wsel[S_TO]) to_q <= i_wb_dat[W-1:0];
     end
   end
 
@@ -272,7 +272,7 @@ module wb_regs #(
         assert (f_past2 && $past(f_start & i_wb_we & (adr == A_FEED), 2));
       if (f_past2 && !$past(i_rst, 2) && $past(f_start & i_wb_we & (adr == A_FEED), 2))
         assert (o_feed == $past(i_wb_dat, 2));
-      if (xs_q != $past(xs_q)) assert (f_past2 && $past(f_start & i_wb_we & (adr == A_BLK_CI), 2));
+      if (ci_q != $past(ci_q)) assert (f_past2 && $past(f_start & i_wb_we & (adr == A_BLK_CI), 2));
       if (o_src != $past(o_src)) assert (f_past2 && $past(f_start & i_wb_we & (adr == A_CTRL), 2));
       // A PUSH write pushes once, unless the queue is full in the clock
       // after it starts (then REJECT is set instead).

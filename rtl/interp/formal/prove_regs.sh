@@ -65,7 +65,7 @@ mutants=(
   "a write lands in the ACK clock (the master may have moved on)|s/wire \[NWS-1:0\] wsel = {NWS{wr1_q}} \&/wire [NWS-1:0] wsel = {NWS{o_wb_ack \& i_wb_we}} \&/"
   "a PUSH into a full queue|s/o_push <= wsel\[S_PUSH\] \& ~i_full;/o_push <= wsel[S_PUSH];/"
   "DAT_O loaded as the access starts (the selects of the clock before)|s/always @(posedge i_clk) o_wb_dat <= rdata;/always @(posedge i_clk) if (acc) o_wb_dat <= rdata;/"
-  "a line's staged CI not zeroed|s/assign o_blk\[BLK_CI +: W\] = arc_q ? xs_q : {W{1'b0}};/assign o_blk[BLK_CI +: W] = xs_q;/"
+  "a line's staged CI not zeroed|s/assign o_blk\[BLK_CI +: W\] = arc_q ? ci_q : {W{1'b0}};/assign o_blk[BLK_CI +: W] = ci_q;/"
   "an arc's SXN kept|s/mode_used\[BLK_MODE_SXN\] = ~arc;/mode_used[BLK_MODE_SXN] = 1'b1;/"
 )
 n=0
