@@ -28,5 +28,23 @@ $(eval $(call design,interp3_hx8k,interp3/interp3.f,INTERP3,hx8k,--no-promote-gl
 $(foreach dev,hx8k up5k,$(eval $(call design,cpu8085_$(dev),cpu8085/cpu8085.f,CPU8085,$(dev),)))
 $(foreach dev,hx8k up5k,$(eval $(call design,board8085_$(dev),board8085/board8085.f,BOARD8085,$(dev),)))
 
+# Analysis designs: not in `make synth`, built by
+#   make -C rtl/synth BUILD=$PWD/build/synth-analysis analysis
+# to tell which part of `core` holds its Fmax (docs/rtl.md, "What limits it"):
+#   core_free_hx8k: core with its command tied high (the datapath free-running,
+#                   the command no longer a late input of the step decision);
+#   core_nodp_hx8k: core with interp_dp replaced by dp_stub.v (timing only).
+define analysis_design
+ANALYSIS += $(1)
+$(1)_SRCS := timing_wrap.v $(3)
+$(1)_INC := $(shell $(RTL)/filelist --incdirs $(RTL)/$(2))
+$(1)_DEFS := $(4)
+$(1)_DEV := hx8k
+$(1)_PNR := --no-promote-globals
+endef
+INTERP_SRCS := $(shell $(RTL)/filelist $(RTL)/interp/interp.f)
+$(eval $(call analysis_design,core_free_hx8k,interp/interp.f,$(INTERP_SRCS),-DDESIGN_CORE -DCMD_HIGH))
+$(eval $(call analysis_design,core_nodp_hx8k,interp/interp.f,$(filter-out %/interp_dp.v,$(INTERP_SRCS)) dp_stub.v,-DDESIGN_CORE))
+
 # The board with the host link: its iCEBreaker bitstream (icebreaker/link.mk).
 include icebreaker/link.mk

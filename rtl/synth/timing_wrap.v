@@ -9,6 +9,8 @@
 //   DESIGN_TOP        interp_top: core, output stage, feed generator,
 //                     position counters, Wishbone registers (the peripheral)
 //   DESIGN_CORE       interp_core (block prep, queue, datapath) + step_out
+//                     (with CMD_HIGH: the core's command tied high, the
+//                     analysis design core_free of designs.mk)
 //   DESIGN_DP         the datapath interp_dp alone
 //   DESIGN_INTERP3    the 3-axis core interp3_core, state outputs included
 //   DESIGN_CPU8085    the 8085 CPU: bus, interrupt pins, retire strobe
@@ -104,7 +106,12 @@ module timing_wrap (
   wire cmd_core, busy, pulse, pulse_y, pulse_neg;
   // The state outputs are for test benches; timing is of the rest.
   interp_core #(.W(W), .QAW(4)) u_core (
-      .i_clk(i_clk), .i_rst(rst), .i_abort(in_q[0]), .i_cmd(cmd_core),
+      .i_clk(i_clk), .i_rst(rst), .i_abort(in_q[0]),
+`ifdef CMD_HIGH
+      .i_cmd(1'b1),  // analysis design core_free: the command held high
+`else
+      .i_cmd(cmd_core),
+`endif
       .i_push(in_q[1]), .i_blk(in_q[2 +: BLK_BITS]),
       .o_full(outs[4]), .o_level(outs[10:5]),
       .o_pulse(pulse), .o_pulse_y(pulse_y), .o_pulse_neg(pulse_neg), .o_pulse_last(outs[11]),
@@ -121,6 +128,9 @@ module timing_wrap (
   );
   assign outs[31:29] = {pulse, pulse_y, pulse_neg};
   assign outs[32] = busy;
+`ifdef CMD_HIGH
+  wire unused_cmd = cmd_core;  // core_free: the core's command is tied high
+`endif
 `elsif DESIGN_TOP
   interp_top #(.W(W), .QAW(4)) u_dut (
       .i_clk(i_clk), .i_rst(rst),
