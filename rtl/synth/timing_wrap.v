@@ -11,6 +11,7 @@
 //   DESIGN_CORE       interp_core (block prep, queue, datapath) + step_out
 //   DESIGN_DP         the datapath interp_dp alone
 //   DESIGN_INTERP3    the 3-axis core interp3_core, state outputs included
+//   DESIGN_DLOOP      the step loop prototype rtl/proto/dloop (docs/rtl-proto.md)
 //   DESIGN_CPU8085    the 8085 CPU: bus, interrupt pins, retire strobe
 //   DESIGN_BOARD8085  the whole board8085, ROM from ROM_FILE
 // Each design sets NI (inputs, reset on top) and NO (outputs).
@@ -48,6 +49,10 @@ module timing_wrap (
   localparam integer W = 24;
   localparam integer NI = 3 * W + 6;  // ends, signs, load, cmd, reset
   localparam integer NO = 8 + 3 * W + 3 * (W + 2);  // the state, then o_ready
+`elsif DESIGN_DLOOP
+  localparam integer W = 24;
+  localparam integer NI = 2 * (W + 1) + 4;  // load, cmd, arc, SUB, ADD, reset
+  localparam integer NO = 3 + W + 2;        // ready, pulse, g, D
 `elsif DESIGN_CPU8085
   localparam integer NI = 15;
   localparam integer NO = 38;
@@ -61,7 +66,7 @@ module timing_wrap (
   localparam integer NI = 0;
   localparam integer NO = 0;
   initial begin
-    $display("timing_wrap: define one of DESIGN_TOP, DESIGN_CORE, DESIGN_DP, DESIGN_INTERP3, DESIGN_CPU8085, DESIGN_BOARD8085");
+    $display("timing_wrap: define one of DESIGN_TOP, DESIGN_CORE, DESIGN_DP, DESIGN_INTERP3, DESIGN_DLOOP, DESIGN_CPU8085, DESIGN_BOARD8085");
     $finish;
   end
 `endif
@@ -141,6 +146,13 @@ module timing_wrap (
       .o_x(outs[7 +: W]), .o_y(outs[7 + W +: W]), .o_z(outs[7 + 2 * W +: W]),
       .o_exy(outs[7 + 3 * W +: W + 2]), .o_exz(outs[9 + 4 * W +: W + 2]),
       .o_eyz(outs[11 + 5 * W +: W + 2]), .o_ready(outs[13 + 6 * W])
+  );
+`elsif DESIGN_DLOOP
+  dloop #(.W(W)) u_dut (
+      .i_clk(i_clk), .i_rst(rst),
+      .i_load(in_q[0]), .i_cmd(in_q[1]), .i_arc(in_q[2]),
+      .i_sub(in_q[3 +: W + 1]), .i_add(in_q[4 + W +: W + 1]),
+      .o_ready(outs[0]), .o_pulse(outs[1]), .o_g(outs[2]), .o_d(outs[3 +: W + 2])
   );
 `elsif DESIGN_CPU8085
   cpu8085 u_dut (

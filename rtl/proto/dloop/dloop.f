@@ -1,0 +1,2 @@
+// rtl/proto/dloop: the two-steps-ahead step loop prototype (issue 15; docs/rtl-proto.md).
+proto/dloop/dloop.v
