@@ -73,7 +73,9 @@ module dloop #(
   reg rdy_q;  // prepared: commands are taken
   reg ld1_q;  // load phase 1: the clock after edge L0
   reg ld2_q;  // load phase 2: the clock after edge L1
-  reg ldp_q;  // ld1_q | ld2_q
+  reg ldp_q;  // ld1_q | ld2_q, in three copies, one per enable (ldn_q, ldpp_q:
+  reg ldn_q;  // yosys would merge equal flip-flops, and abc would then build
+  reg ldpp_q; // the three enables on one shared LUT "ldp | i_load": two levels)
   reg pul_q;  // o_pulse
   reg og_q;   // o_g
   reg a_q;    // the move is an arc
@@ -85,15 +87,15 @@ module dloop #(
   reg goo_q;  // d_oo
   reg gc_q;   // c_in, c_out
   reg gd_q;   // D
-  // Operand shift enables: the step now is inward (sn) / outward (sp), 0 until prepared.
+  // Operand shift enables: the step now is inward (sn) / outward (sp).
   reg sn_q;
   reg sp_q;
 
   wire step = i_cmd & rdy_q;
-  wire en = step | ldp_q | i_load;           // d, c, signs, selects
-  wire en_d = step | i_load;                 // D
-  wire en_n = (i_cmd & sn_q) | ldp_q | i_load;  // P1..P3
-  wire en_p = (i_cmd & sp_q) | ldp_q | i_load;  // P4, P5
+  // Each enable is one LUT of registers (no enable formed from another).
+  wire en = step | ldp_q | i_load;           // d, c, D, signs, selects
+  wire en_n = (i_cmd & sn_q) | ldn_q | i_load;  // P1..P3
+  wire en_p = (i_cmd & sp_q) | ldpp_q | i_load;  // P4, P5
 
   // ---- state, split {H, k, L}
   reg [HW-1:0] dii_h, dio_h, doo_h, cin_h, cout_h, dd_h;
@@ -138,11 +140,14 @@ module dloop #(
       ld1_q <= 1'b0;
       ld2_q <= 1'b0;
       ldp_q <= 1'b0;
+      ldpp_q <= 1'b0;
       pul_q <= 1'b0;
     end else begin
       ld1_q <= i_load;
       ld2_q <= ld1_q & ~i_load;
       ldp_q <= i_load | ld1_q;
+      // ld2_q & rdy_q never holds: it keeps ldpp_q apart from ldp_q.
+      ldpp_q <= i_load | ld1_q | (ld2_q & rdy_q);
       if (i_load) rdy_q <= 1'b0;
       else if (ld2_q) rdy_q <= 1'b1;
       pul_q <= step & ~i_load;
@@ -150,6 +155,7 @@ module dloop #(
   end
 
   always @(posedge i_clk) begin
+    ldn_q <= i_load | ld1_q;  // not reset: a shift of the operands before the first load is harmless
     if (i_load) a_q <= i_arc;
     if (step) og_q <= gm_q;
   end
@@ -191,17 +197,18 @@ module dloop #(
     end
   end
 
-  // Operand shift enables: from edge L2 on, the choice of the step now.
+  // Operand shift enables: 1 / 0 from the load phases (edge L2: D = 0, the
+  // first step goes inward), then each its own copy of the choice (sp_q
+  // negated). Not reset: until a load they only shift operands no step reads.
   always @(posedge i_clk) begin
-    if (i_rst | i_load) begin
-      sn_q <= 1'b0;
-      sp_q <= 1'b0;
-    end else if (ld2_q) begin
-      sn_q <= 1'b1;
-      sp_q <= 1'b0;
-    end else if (step) begin
-      sn_q <= gm_q ? ~scin_q : ~scout_q;
-      sp_q <= gm_q ? scin_q : scout_q;
+    if (en) begin
+      if (ldp_q) begin
+        sn_q <= 1'b1;
+        sp_q <= 1'b0;
+      end else begin
+        sn_q <= sn_q ? ~scin_q : ~scout_q;
+        sp_q <= sp_q ? scout_q : scin_q;
+      end
     end
   end
 
@@ -222,8 +229,8 @@ module dloop #(
       scin_q <= gm_q ? s_ii : s_io;
       scout_q <= gm_q ? s_io : s_oo;
     end
-    if (en_d) begin
-      if (i_load) {dd_h, dd_k, dd_l} <= {N + 1{1'b0}};
+    if (en) begin  // D = 0 from the load until the first step
+      if (i_load | ldp_q) {dd_h, dd_k, dd_l} <= {N + 1{1'b0}};
       else {dd_h, dd_k, dd_l} <= gd_q ? {cin_h, cin_k, cin_l} : {cout_h, cout_k, cout_l};
     end
   end
