@@ -12,10 +12,17 @@
 //   DESIGN_DP         the datapath interp_dp alone
 //   DESIGN_INTERP3    the 3-axis core interp3_core, state outputs included
 //   DESIGN_DLOOP      the step loop prototype rtl/proto/dloop (docs/rtl-proto.md)
+//   DESIGN_DLOOP_NOD  the same without its D output (trimmed, as a core's
+//                     state outputs are): the loop's own cost
 //   DESIGN_CPU8085    the 8085 CPU: bus, interrupt pins, retire strobe
 //   DESIGN_BOARD8085  the whole board8085, ROM from ROM_FILE
 // Each design sets NI (inputs, reset on top) and NO (outputs).
 `default_nettype none
+
+`ifdef DESIGN_DLOOP_NOD
+`define DESIGN_DLOOP
+`define DLOOP_NO_D
+`endif
 
 module timing_wrap (
     input  wire i_clk_pin,
@@ -52,7 +59,11 @@ module timing_wrap (
 `elsif DESIGN_DLOOP
   localparam integer W = 24;
   localparam integer NI = 2 * (W + 1) + 4;  // load, cmd, arc, SUB, ADD, reset
+`ifdef DLOOP_NO_D
+  localparam integer NO = 3;                // ready, pulse, g
+`else
   localparam integer NO = 3 + W + 2;        // ready, pulse, g, D
+`endif
 `elsif DESIGN_CPU8085
   localparam integer NI = 15;
   localparam integer NO = 38;
@@ -152,7 +163,11 @@ module timing_wrap (
       .i_clk(i_clk), .i_rst(rst),
       .i_load(in_q[0]), .i_cmd(in_q[1]), .i_arc(in_q[2]),
       .i_sub(in_q[3 +: W + 1]), .i_add(in_q[4 + W +: W + 1]),
+`ifdef DLOOP_NO_D
+      .o_ready(outs[0]), .o_pulse(outs[1]), .o_g(outs[2]), .o_d()
+`else
       .o_ready(outs[0]), .o_pulse(outs[1]), .o_g(outs[2]), .o_d(outs[3 +: W + 2])
+`endif
   );
 `elsif DESIGN_CPU8085
   cpu8085 u_dut (
