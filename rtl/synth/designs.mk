@@ -8,7 +8,8 @@
 #   dp_*:        the datapath interp_dp alone
 #   interp3_*:   the 3-axis core (figures: docs/rtl-3axis.md)
 #   dloop_*:     the step loop prototype rtl/proto/dloop (docs/rtl-proto.md);
-#                dloop_nod_* without its D output (the loop's own cost)
+#                dloop_nod_* without its D output (the loop's own cost);
+#                dloop1_*, dloop1_nod_*: the same one step ahead (dloop1.v)
 #   cpu8085_*:   the 8085 CPU alone (figures: docs/cpu8085.md)
 #   board8085_*: the board, ROM = the board test program's image
 #
@@ -29,6 +30,8 @@ $(foreach dev,hx8k up5k,$(foreach d,CORE TOP DP,\
 $(eval $(call design,interp3_hx8k,interp3/interp3.f,INTERP3,hx8k,--no-promote-globals))
 $(eval $(call design,dloop_hx8k,proto/dloop/dloop.f,DLOOP,hx8k,--no-promote-globals))
 $(eval $(call design,dloop_nod_hx8k,proto/dloop/dloop.f,DLOOP_NOD,hx8k,--no-promote-globals))
+$(eval $(call design,dloop1_hx8k,proto/dloop/dloop.f,DLOOP1,hx8k,--no-promote-globals))
+$(eval $(call design,dloop1_nod_hx8k,proto/dloop/dloop.f,DLOOP1_NOD,hx8k,--no-promote-globals))
 $(foreach dev,hx8k up5k,$(eval $(call design,cpu8085_$(dev),cpu8085/cpu8085.f,CPU8085,$(dev),)))
 $(foreach dev,hx8k up5k,$(eval $(call design,board8085_$(dev),board8085/board8085.f,BOARD8085,$(dev),)))
 

@@ -14,6 +14,7 @@
 //   DESIGN_DLOOP      the step loop prototype rtl/proto/dloop (docs/rtl-proto.md)
 //   DESIGN_DLOOP_NOD  the same without its D output (trimmed, as a core's
 //                     state outputs are): the loop's own cost
+//   DESIGN_DLOOP1, DESIGN_DLOOP1_NOD  the same for dloop1 (one step ahead)
 //   DESIGN_CPU8085    the 8085 CPU: bus, interrupt pins, retire strobe
 //   DESIGN_BOARD8085  the whole board8085, ROM from ROM_FILE
 // Each design sets NI (inputs, reset on top) and NO (outputs).
@@ -22,6 +23,16 @@
 `ifdef DESIGN_DLOOP_NOD
 `define DESIGN_DLOOP
 `define DLOOP_NO_D
+`endif
+`ifdef DESIGN_DLOOP1_NOD
+`define DESIGN_DLOOP1
+`define DLOOP_NO_D
+`endif
+`ifdef DESIGN_DLOOP1
+`define DESIGN_DLOOP
+`define DLOOP_MODULE dloop1
+`elsif DESIGN_DLOOP
+`define DLOOP_MODULE dloop
 `endif
 
 module timing_wrap (
@@ -159,7 +170,7 @@ module timing_wrap (
       .o_eyz(outs[11 + 5 * W +: W + 2]), .o_ready(outs[13 + 6 * W])
   );
 `elsif DESIGN_DLOOP
-  dloop #(.W(W)) u_dut (
+  `DLOOP_MODULE #(.W(W)) u_dut (
       .i_clk(i_clk), .i_rst(rst),
       .i_load(in_q[0]), .i_cmd(in_q[1]), .i_arc(in_q[2]),
       .i_sub(in_q[3 +: W + 1]), .i_add(in_q[4 + W +: W + 1]),

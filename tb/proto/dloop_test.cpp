@@ -1,5 +1,5 @@
-// rtl/proto/dloop (the two-steps-ahead step loop, docs/rtl-proto.md)
-// against the closed forms of docs/algorithm.md, not its own recurrence:
+// rtl/proto/dloop (the step loop prototypes, docs/rtl-proto.md: dloop two
+// steps ahead, dloop1 one) against the closed forms of docs/algorithm.md, not its own recurrence:
 //
 //   arc (Q1 CCW, inward axis X, start (x0, y0), R^2 = x0^2 + y0^2):
 //     the choice of a step is D >= 0 with D = x^2 + y^2 - R^2 before it;
@@ -21,6 +21,7 @@
 #include <string>
 
 #include "Vdloop.h"
+#include "Vdloop1.h"
 #include "harness.hpp"
 
 namespace {
@@ -39,12 +40,15 @@ std::uint64_t seed() {
   return e ? std::strtoull(e, nullptr, 10) : 1982;
 }
 
-class Dloop : public contour::tb::Harness<Vdloop> {
+template <class V>
+class Dloop : public contour::tb::Harness<V> {
  public:
+  using contour::tb::Harness<V>::top;
+  using contour::tb::Harness<V>::tick;
   Dloop() {
     top().i_load = 0;
     top().i_cmd = 0;
-    hold_reset(1);
+    this->hold_reset(1);
   }
 
   // o_d, sign-extended.
@@ -106,7 +110,8 @@ std::string where(const Outcome& r, const char* what, std::int64_t x, std::int64
 }
 
 // The arc from (x0, y0), Q1 CCW: SUB = 2 x0 - 1, ADD = 2 y0 + 1.
-Outcome arc(Dloop& h, std::mt19937_64& rng, std::int64_t x0, std::int64_t y0, std::uint64_t max_steps) {
+template <class H>
+Outcome arc(H& h, std::mt19937_64& rng, std::int64_t x0, std::int64_t y0, std::uint64_t max_steps) {
   Outcome r;
   r.name = "arc from (" + std::to_string(x0) + ", " + std::to_string(y0) + ")";
   r.error = h.load(true, static_cast<std::uint64_t>(2 * x0 - 1), static_cast<std::uint64_t>(2 * y0 + 1));
@@ -140,7 +145,8 @@ Outcome arc(Dloop& h, std::mt19937_64& rng, std::int64_t x0, std::int64_t y0, st
 }
 
 // The line with constants A (outward), B (inward) from the origin.
-Outcome line(Dloop& h, std::mt19937_64& rng, std::int64_t a, std::int64_t b, std::uint64_t max_steps) {
+template <class H>
+Outcome line(H& h, std::mt19937_64& rng, std::int64_t a, std::int64_t b, std::uint64_t max_steps) {
   Outcome r;
   r.name = "line A = " + std::to_string(a) + ", B = " + std::to_string(b);
   r.error = h.load(false, static_cast<std::uint64_t>(b), static_cast<std::uint64_t>(a));
@@ -171,8 +177,9 @@ Outcome line(Dloop& h, std::mt19937_64& rng, std::int64_t a, std::int64_t b, std
   return r;
 }
 
-TEST(Dloop, ArcsAndLinesMatchTheClosedForms) {
-  Dloop h;
+template <class V>
+void check_all(const char* name) {
+  Dloop<V> h;
   std::mt19937_64 rng(seed());
   std::uint64_t runs = 0, steps = 0, failed = 0;
   std::string first;
@@ -219,11 +226,14 @@ TEST(Dloop, ArcsAndLinesMatchTheClosedForms) {
     tally(line(h, rng, a, b, 50000));
   }
 
-  std::printf("dloop W=24: %llu runs, %llu steps, %llu failed (seed %llu)\n",
-              static_cast<unsigned long long>(runs), static_cast<unsigned long long>(steps),
+  std::printf("%s W=24: %llu runs, %llu steps, %llu failed (seed %llu)\n",
+              name, static_cast<unsigned long long>(runs), static_cast<unsigned long long>(steps),
               static_cast<unsigned long long>(failed), static_cast<unsigned long long>(seed()));
   EXPECT_EQ(failed, 0u) << first;
   EXPECT_GT(steps, 20000000u);
 }
+
+TEST(Dloop, TwoStepsAheadMatchesTheClosedForms) { check_all<Vdloop>("dloop"); }
+TEST(Dloop, OneStepAheadMatchesTheClosedForms) { check_all<Vdloop1>("dloop1"); }
 
 }  // namespace
