@@ -15,6 +15,7 @@
 //   DESIGN_DLOOP_NOD  the same without its D output (trimmed, as a core's
 //                     state outputs are): the loop's own cost
 //   DESIGN_DLOOP1, DESIGN_DLOOP1_NOD  the same for dloop1 (one step ahead)
+//   DESIGN_DLOOP1L, DESIGN_DLOOP1L_NOD  the same for dloop1l (one-clock load)
 //   DESIGN_CPU8085    the 8085 CPU: bus, interrupt pins, retire strobe
 //   DESIGN_BOARD8085  the whole board8085, ROM from ROM_FILE
 // Each design sets NI (inputs, reset on top) and NO (outputs).
@@ -26,6 +27,10 @@
 `endif
 `ifdef DESIGN_DLOOP1_NOD
 `define DESIGN_DLOOP1
+`define DLOOP_NO_D
+`endif
+`ifdef DESIGN_DLOOP1L_NOD
+`define DESIGN_DLOOP1L
 `define DLOOP_NO_D
 `endif
 `ifdef DESIGN_DLOOP1
@@ -70,6 +75,14 @@ module timing_wrap (
 `elsif DESIGN_DLOOP
   localparam integer W = 24;
   localparam integer NI = 2 * (W + 1) + 4;  // load, cmd, arc, SUB, ADD, reset
+`ifdef DLOOP_NO_D
+  localparam integer NO = 3;                // ready, pulse, g
+`else
+  localparam integer NO = 3 + W + 2;        // ready, pulse, g, D
+`endif
+`elsif DESIGN_DLOOP1L
+  localparam integer W = 24;
+  localparam integer NI = 5 * (W + 2) + 4;  // load, cmd, arc, the block, reset
 `ifdef DLOOP_NO_D
   localparam integer NO = 3;                // ready, pulse, g
 `else
@@ -174,6 +187,18 @@ module timing_wrap (
       .i_clk(i_clk), .i_rst(rst),
       .i_load(in_q[0]), .i_cmd(in_q[1]), .i_arc(in_q[2]),
       .i_sub(in_q[3 +: W + 1]), .i_add(in_q[4 + W +: W + 1]),
+`ifdef DLOOP_NO_D
+      .o_ready(outs[0]), .o_pulse(outs[1]), .o_g(outs[2]), .o_d()
+`else
+      .o_ready(outs[0]), .o_pulse(outs[1]), .o_g(outs[2]), .o_d(outs[3 +: W + 2])
+`endif
+  );
+`elsif DESIGN_DLOOP1L
+  dloop1l #(.W(W)) u_dut (
+      .i_clk(i_clk), .i_rst(rst),
+      .i_load(in_q[0]), .i_cmd(in_q[1]), .i_arc(in_q[2]),
+      .i_s2(in_q[3 +: W + 2]), .i_a0(in_q[5 + W +: W + 2]),
+      .i_f1(in_q[7 + 2 * W +: W + 2]), .i_f2(in_q[9 + 3 * W +: W + 2]), .i_f3(in_q[11 + 4 * W +: W + 2]),
 `ifdef DLOOP_NO_D
       .o_ready(outs[0]), .o_pulse(outs[1]), .o_g(outs[2]), .o_d()
 `else

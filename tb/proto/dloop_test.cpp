@@ -19,9 +19,13 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
+#include <algorithm>
 
 #include "Vdloop.h"
 #include "Vdloop1.h"
+#include "Vdloop1l.h"
 #include "harness.hpp"
 
 namespace {
@@ -235,5 +239,130 @@ void check_all(const char* name) {
 
 TEST(Dloop, TwoStepsAheadMatchesTheClosedForms) { check_all<Vdloop>("dloop"); }
 TEST(Dloop, OneStepAheadMatchesTheClosedForms) { check_all<Vdloop1>("dloop1"); }
+
+// dloop1l: the block as a block preparation would give it; loads in one
+// clock, which may be the clock of a step.
+class Dloop1l : public contour::tb::Harness<Vdloop1l> {
+ public:
+  Dloop1l() {
+    top().i_load = 0;
+    top().i_cmd = 0;
+    hold_reset(1);
+  }
+  std::int64_t d() const {
+    std::int64_t v = static_cast<std::int64_t>(top().o_d);
+    if (v & (std::int64_t{1} << (kN - 1))) v -= std::int64_t{1} << kN;
+    return v;
+  }
+  // The block's fields on the inputs (D's, -SUB, kept until the first step).
+  void block(bool arc, std::int64_t sub, std::int64_t add) {
+    const std::int64_t a = arc ? 1 : 0;
+    auto f = [](std::int64_t v) { return static_cast<std::uint32_t>(v & ((std::int64_t{1} << kN) - 1)); };
+    top().i_arc = arc;
+    top().i_s2 = f(sub - 2 * a);
+    top().i_a0 = f(add);
+    top().i_f1 = f(2 * sub - 2 * a);
+    top().i_f2 = f(add - sub);
+    top().i_f3 = f(-sub);
+  }
+  // One clock: load and/or command; returns the pulse's choice or -1.
+  int clock(bool load, bool cmd) {
+    top().i_load = load;
+    top().i_cmd = cmd;
+    tick();
+    top().i_load = 0;
+    top().i_cmd = 0;
+    return top().o_pulse ? (top().o_g ? 1 : 0) : -1;
+  }
+};
+
+// A move on dloop1l against the closed form; the move is loaded in the
+// clock of the previous move's last step when `chained` (that step's choice
+// is checked by the caller: `last` returns it).
+struct Move1l {
+  bool arc;
+  std::int64_t x0, y0;  // arc: start; line: A = y0, B = x0
+  std::uint64_t steps;  // at most
+};
+
+std::string run_moves(Dloop1l& h, std::mt19937_64& rng, const std::vector<Move1l>& moves, bool chained,
+                      std::uint64_t& total) {
+  int pending = -2;  // the choice the last step of the move before must show (-2: none)
+  for (std::size_t m = 0; m < moves.size(); ++m) {
+    const Move1l& mv = moves[m];
+    const std::int64_t sub = mv.arc ? 2 * mv.x0 - 1 : mv.x0;
+    const std::int64_t add = mv.arc ? 2 * mv.y0 + 1 : mv.y0;
+    const std::int64_t r2 = mv.x0 * mv.x0 + mv.y0 * mv.y0;
+    std::int64_t x = mv.x0, y = mv.arc ? mv.y0 : 0;
+    if (!mv.arc) x = 0;
+    auto dval = [&]() { return mv.arc ? x * x + y * y - r2 : mv.y0 * y - mv.x0 * x; };
+    auto name = [&]() {
+      return std::string(mv.arc ? "arc from (" : "line (A, B) = (") + std::to_string(mv.arc ? mv.x0 : mv.y0) + ", " +
+             std::to_string(mv.arc ? mv.y0 : mv.x0) + ")" + (chained ? " chained" : "");
+    };
+    h.block(mv.arc, sub, add);
+    const bool with_step = pending != -2;
+    const int got = h.clock(true, with_step);
+    if (with_step && got != pending) return name() + ": the last step of the move before: choice " + std::to_string(got);
+    if (!with_step && got != -1) return name() + ": a pulse in the load clock without a command";
+    if (h.d() != 0) return name() + ": D = " + std::to_string(h.d()) + " after the load";
+    pending = -2;
+    for (std::uint64_t n = 0; n < mv.steps; ++n) {
+      const std::int64_t before = dval();
+      if (mv.arc && x == 1 && before >= 0) break;
+      const int want = before >= 0 ? 1 : 0;
+      // The state after this step, to know whether it is the move's last.
+      const std::int64_t x1 = want ? (mv.arc ? x - 1 : x + 1) : x, y1 = want ? y : y + 1;
+      const std::int64_t d1 = mv.arc ? x1 * x1 + y1 * y1 - r2 : mv.y0 * y1 - mv.x0 * x1;
+      const bool last = chained && m + 1 < moves.size() && (n + 1 == mv.steps || (mv.arc && x1 == 1 && d1 >= 0));
+      if (last) {  // this step is taken in the clock that loads the next move
+        pending = want;
+        ++total;
+        break;
+      }
+      if (!chained) {
+        for (unsigned gap = rng() % 4 == 0 ? static_cast<unsigned>(rng() % 3) : 0u; gap > 0; --gap)
+          if (h.clock(false, false) != -1 || h.d() != before) return name() + ": a clock without a command moved";
+      }
+      const int g = h.clock(false, true);
+      ++total;
+      if (g != want)
+        return name() + ": step " + std::to_string(n) + " choice " + std::to_string(g) + ", expected " + std::to_string(want);
+      if (g) { if (mv.arc) --x; else ++x; } else ++y;
+      if (h.d() != dval())
+        return name() + ": step " + std::to_string(n) + " D " + std::to_string(h.d()) + ", expected " + std::to_string(dval());
+    }
+  }
+  return "";
+}
+
+TEST(Dloop, OneClockLoadMatchesTheClosedForms) {
+  Dloop1l h;
+  std::mt19937_64 rng(seed() + 1);
+  constexpr std::int64_t kMaxMag = (std::int64_t{1} << kW) - 1;
+  std::vector<Move1l> moves;
+  for (std::int64_t r : {2, 3, 4, 5, 7, 10, 100, 4095, 4096, 8193, 65537})
+    moves.push_back({true, r, 0, ~std::uint64_t{0}});
+  moves.push_back({true, std::int64_t{1} << 23, 0, 400000});
+  moves.push_back({true, 50, kMaxMag - 30, ~std::uint64_t{0}});
+  for (auto [a, b] : {std::pair<std::int64_t, std::int64_t>{1, 1}, {3, 5}, {5, 3}, {4096, 8191}, {kMaxMag, kMaxMag},
+                      {kMaxMag, 1}, {1, kMaxMag}})
+    moves.push_back({false, b, a, static_cast<std::uint64_t>(std::min<std::int64_t>(a + b, 200000))});
+  for (int i = 0; i < 200; ++i) {  // short moves of every size: the load path back to back
+    const unsigned bits = 2 + static_cast<unsigned>(rng() % 22);
+    const std::int64_t p = 2 + static_cast<std::int64_t>(rng() % (std::uint64_t{1} << bits));
+    const std::int64_t q = static_cast<std::int64_t>(rng() % (std::uint64_t{1} << bits));
+    if (rng() % 2) moves.push_back({true, p, q, 1 + rng() % 40});
+    else moves.push_back({false, p, q + 1, 1 + rng() % 40});
+  }
+  std::uint64_t total = 0;
+  const std::string e1 = run_moves(h, rng, moves, false, total);
+  EXPECT_EQ(e1, "");
+  const std::string e2 = run_moves(h, rng, moves, true, total);
+  EXPECT_EQ(e2, "");
+  std::printf("dloop1l W=24: %zu moves twice (apart, chained), %llu steps\n", moves.size(),
+              static_cast<unsigned long long>(total));
+  EXPECT_GT(total, 2000000u);
+}
 
 }  // namespace
