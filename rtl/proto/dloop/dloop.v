@@ -35,8 +35,12 @@
 //     carry-in adds the 1), P2, P3, P4 are shifted copies; the counters P1,
 //     P5 add 2a to their low part and, by a registered "it overflows" flag,
 //     1 to their high part (no 26-bit ripple);
-//   - the selects are five copies of g, each computing its own next value
-//     (so that yosys does not merge them), 27..54 multiplexers each.
+//   - the selects are six copies of g, each computing its own next value
+//     (so that yosys does not merge them), 2..54 multiplexers each, and
+//     two more (sn_q, sp_q) are the operands' shift enables;
+//   - every clock enable is one LUT of registers and i_cmd / i_load (the
+//     load-phase flag has a copy per enable: abc built them on a shared
+//     LUT otherwise, two levels into 250 flip-flops' enables).
 //
 // Timing: i_load in a clock (edge L0) takes SUB, ADD, arc and sets D = 0;
 // edges L1, L2 form the candidates, sums and operands with the datapath's
@@ -80,7 +84,7 @@ module dloop #(
   reg og_q;   // o_g
   reg a_q;    // the move is an arc
 
-  // Selects: g, the choice of the step now (D >= 0), in five copies:
+  // Selects: g, the choice of the step now (D >= 0), in six copies:
   reg gm_q;   // signs, output
   reg gii_q;  // d_ii
   reg gio_q;  // d_io
