@@ -16,6 +16,7 @@
 //                     state outputs are): the loop's own cost
 //   DESIGN_DLOOP1, DESIGN_DLOOP1_NOD  the same for dloop1 (one step ahead)
 //   DESIGN_DLOOP1L, DESIGN_DLOOP1L_NOD  the same for dloop1l (one-clock load)
+//   DESIGN_DLOOP1X, DESIGN_DLOOP1X_NOD  the same for dloop1x (and crossings)
 //   DESIGN_CPU8085    the 8085 CPU: bus, interrupt pins, retire strobe
 //   DESIGN_BOARD8085  the whole board8085, ROM from ROM_FILE
 // Each design sets NI (inputs, reset on top) and NO (outputs).
@@ -31,6 +32,10 @@
 `endif
 `ifdef DESIGN_DLOOP1L_NOD
 `define DESIGN_DLOOP1L
+`define DLOOP_NO_D
+`endif
+`ifdef DESIGN_DLOOP1X_NOD
+`define DESIGN_DLOOP1X
 `define DLOOP_NO_D
 `endif
 `ifdef DESIGN_DLOOP1
@@ -87,6 +92,14 @@ module timing_wrap (
   localparam integer NO = 3;                // ready, pulse, g
 `else
   localparam integer NO = 3 + W + 2;        // ready, pulse, g, D
+`endif
+`elsif DESIGN_DLOOP1X
+  localparam integer W = 24;
+  localparam integer NI = 6 * (W + 2) + 4;  // load, cmd, arc, the block, reset
+`ifdef DLOOP_NO_D
+  localparam integer NO = 4;                // ready, pulse, g, cross
+`else
+  localparam integer NO = 4 + W + 2;        // ready, pulse, g, cross, D
 `endif
 `elsif DESIGN_CPU8085
   localparam integer NI = 15;
@@ -203,6 +216,19 @@ module timing_wrap (
       .o_ready(outs[0]), .o_pulse(outs[1]), .o_g(outs[2]), .o_d()
 `else
       .o_ready(outs[0]), .o_pulse(outs[1]), .o_g(outs[2]), .o_d(outs[3 +: W + 2])
+`endif
+  );
+`elsif DESIGN_DLOOP1X
+  dloop1x #(.W(W)) u_dut (
+      .i_clk(i_clk), .i_rst(rst),
+      .i_load(in_q[0]), .i_cmd(in_q[1]), .i_arc(in_q[2]),
+      .i_s2(in_q[3 +: W + 2]), .i_a0(in_q[5 + W +: W + 2]), .i_r(in_q[7 + 2 * W +: W + 2]),
+      .i_f1(in_q[9 + 3 * W +: W + 2]), .i_f2(in_q[11 + 4 * W +: W + 2]), .i_f3(in_q[13 + 5 * W +: W + 2]),
+      .o_ready(outs[0]), .o_pulse(outs[1]), .o_g(outs[2]), .o_cross(outs[3]),
+`ifdef DLOOP_NO_D
+      .o_d()
+`else
+      .o_d(outs[4 +: W + 2])
 `endif
   );
 `elsif DESIGN_CPU8085

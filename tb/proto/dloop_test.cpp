@@ -26,6 +26,7 @@
 #include "Vdloop.h"
 #include "Vdloop1.h"
 #include "Vdloop1l.h"
+#include "Vdloop1x.h"
 #include "harness.hpp"
 
 namespace {
@@ -240,14 +241,17 @@ void check_all(const char* name) {
 TEST(Dloop, TwoStepsAheadMatchesTheClosedForms) { check_all<Vdloop>("dloop"); }
 TEST(Dloop, OneStepAheadMatchesTheClosedForms) { check_all<Vdloop1>("dloop1"); }
 
-// dloop1l: the block as a block preparation would give it; loads in one
-// clock, which may be the clock of a step.
-class Dloop1l : public contour::tb::Harness<Vdloop1l> {
+// dloop1l, dloop1x: the block as a block preparation would give it; loads
+// in one clock, which may be the clock of a step.
+template <class V>
+class OneClockLoad : public contour::tb::Harness<V> {
  public:
-  Dloop1l() {
+  using contour::tb::Harness<V>::top;
+  using contour::tb::Harness<V>::tick;
+  OneClockLoad() {
     top().i_load = 0;
     top().i_cmd = 0;
-    hold_reset(1);
+    this->hold_reset(1);
   }
   std::int64_t d() const {
     std::int64_t v = static_cast<std::int64_t>(top().o_d);
@@ -264,6 +268,12 @@ class Dloop1l : public contour::tb::Harness<Vdloop1l> {
     top().i_f1 = f(2 * sub - 2 * a);
     top().i_f2 = f(add - sub);
     top().i_f3 = f(-sub);
+    if constexpr (requires(V& v) { v.i_r; }) top().i_r = f(add - 2);
+  }
+  // The last step crossed onto the next quadrant (dloop1x), else false.
+  bool crossed() const {
+    if constexpr (requires(const V& v) { v.o_cross; }) return top().o_cross;
+    else return false;
   }
   // One clock: load and/or command; returns the pulse's choice or -1.
   int clock(bool load, bool cmd) {
@@ -275,6 +285,8 @@ class Dloop1l : public contour::tb::Harness<Vdloop1l> {
     return top().o_pulse ? (top().o_g ? 1 : 0) : -1;
   }
 };
+using Dloop1l = OneClockLoad<Vdloop1l>;
+using Dloop1x = OneClockLoad<Vdloop1x>;
 
 // A move on dloop1l against the closed form; the move is loaded in the
 // clock of the previous move's last step when `chained` (that step's choice
@@ -285,8 +297,15 @@ struct Move1l {
   std::uint64_t steps;  // at most
 };
 
-std::string run_moves(Dloop1l& h, std::mt19937_64& rng, const std::vector<Move1l>& moves, bool chained,
-                      std::uint64_t& total) {
+// With `crossings` an arc runs on round the circle: an inward step from
+// |in| = 1 crosses onto the next quadrant, (in, out) = (out, 0) (table Q of
+// docs/algorithm.md: the old outward axis becomes the inward one); D is
+// in^2 + out^2 - R^2 all the same. Without, it stops before |in| reaches 0.
+std::uint64_t g_crossings = 0;  // crossings the oracle saw (and checked)
+
+template <class H>
+std::string run_moves(H& h, std::mt19937_64& rng, const std::vector<Move1l>& moves, bool chained,
+                      std::uint64_t& total, bool crossings = false) {
   int pending = -2;  // the choice the last step of the move before must show (-2: none)
   for (std::size_t m = 0; m < moves.size(); ++m) {
     const Move1l& mv = moves[m];
@@ -309,12 +328,15 @@ std::string run_moves(Dloop1l& h, std::mt19937_64& rng, const std::vector<Move1l
     pending = -2;
     for (std::uint64_t n = 0; n < mv.steps; ++n) {
       const std::int64_t before = dval();
-      if (mv.arc && x == 1 && before >= 0) break;
+      if (mv.arc && !crossings && x == 1 && before >= 0) break;
       const int want = before >= 0 ? 1 : 0;
       // The state after this step, to know whether it is the move's last.
-      const std::int64_t x1 = want ? (mv.arc ? x - 1 : x + 1) : x, y1 = want ? y : y + 1;
+      const bool cross = crossings && mv.arc && want && x == 1;
+      std::int64_t x1 = want ? (mv.arc ? x - 1 : x + 1) : x, y1 = want ? y : y + 1;
+      if (cross) { x1 = y; y1 = 0; }
       const std::int64_t d1 = mv.arc ? x1 * x1 + y1 * y1 - r2 : mv.y0 * y1 - mv.x0 * x1;
-      const bool last = chained && m + 1 < moves.size() && (n + 1 == mv.steps || (mv.arc && x1 == 1 && d1 >= 0));
+      const bool last = chained && m + 1 < moves.size() &&
+                        (n + 1 == mv.steps || (mv.arc && !crossings && x1 == 1 && d1 >= 0));
       if (last) {  // this step is taken in the clock that loads the next move
         pending = want;
         ++total;
@@ -328,7 +350,11 @@ std::string run_moves(Dloop1l& h, std::mt19937_64& rng, const std::vector<Move1l
       ++total;
       if (g != want)
         return name() + ": step " + std::to_string(n) + " choice " + std::to_string(g) + ", expected " + std::to_string(want);
-      if (g) { if (mv.arc) --x; else ++x; } else ++y;
+      if (h.crossed() != cross)
+        return name() + ": step " + std::to_string(n) + " crossing " + std::to_string(h.crossed());
+      g_crossings += cross ? 1 : 0;
+      x = x1;
+      y = y1;
       if (h.d() != dval())
         return name() + ": step " + std::to_string(n) + " D " + std::to_string(h.d()) + ", expected " + std::to_string(dval());
     }
@@ -363,6 +389,41 @@ TEST(Dloop, OneClockLoadMatchesTheClosedForms) {
   std::printf("dloop1l W=24: %zu moves twice (apart, chained), %llu steps\n", moves.size(),
               static_cast<unsigned long long>(total));
   EXPECT_GT(total, 2000000u);
+}
+
+TEST(Dloop, CrossingsMatchTheClosedForms) {
+  Dloop1x h;
+  std::mt19937_64 rng(seed() + 2);
+  constexpr std::int64_t kMaxMag = (std::int64_t{1} << kW) - 1;
+  std::vector<Move1l> moves;
+  // Whole turns and more (8 R steps is about one turn): small circles
+  // (new |in| of 1 and 2 right after a crossing), R on both sides of the
+  // split of the sums, points off the integer circle.
+  for (std::int64_t r : {2, 3, 4, 5, 7, 10, 100, 4095, 4097, 8193, 65537})
+    moves.push_back({true, r, 0, static_cast<std::uint64_t>(20 * r + 50)});
+  for (auto [x0, y0] : {std::pair<std::int64_t, std::int64_t>{2, 1}, {2, 2}, {3, 1}, {3, 3}, {2, 5}, {5, 2}, {9, 4}})
+    moves.push_back({true, x0, y0, 300});
+  // Crossings with big operands: near the axis of big circles.
+  for (std::int64_t x0 : {2, 3, 5, 40, 5000})
+    moves.push_back({true, x0, kMaxMag - 30, 400000});
+  moves.push_back({true, 2, std::int64_t{1} << 23, 300000});
+  for (int i = 0; i < 200; ++i) {
+    const unsigned bits = 1 + static_cast<unsigned>(rng() % 23);
+    const std::int64_t x0 = 2 + static_cast<std::int64_t>(rng() % 30);
+    const std::int64_t y0 = static_cast<std::int64_t>(rng() % (std::uint64_t{1} << bits));
+    moves.push_back({true, x0, y0, 1 + rng() % 3000});
+    if (i % 4 == 0) moves.push_back({false, 1 + static_cast<std::int64_t>(rng() % kMaxMag), 1 + static_cast<std::int64_t>(rng() % kMaxMag), 1 + rng() % 300});
+  }
+  std::uint64_t total = 0;
+  g_crossings = 0;
+  const std::string e1 = run_moves(h, rng, moves, false, total, true);
+  EXPECT_EQ(e1, "");
+  const std::string e2 = run_moves(h, rng, moves, true, total, true);
+  EXPECT_EQ(e2, "");
+  std::printf("dloop1x W=24: %zu moves twice (apart, chained), %llu steps, %llu crossings\n", moves.size(),
+              static_cast<unsigned long long>(total), static_cast<unsigned long long>(g_crossings));
+  EXPECT_GT(total, 2000000u);
+  EXPECT_GT(g_crossings, 1000u);
 }
 
 }  // namespace

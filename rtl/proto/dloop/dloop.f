@@ -2,3 +2,4 @@
 proto/dloop/dloop.v
 proto/dloop/dloop1.v
 proto/dloop/dloop1l.v
+proto/dloop/dloop1x.v
