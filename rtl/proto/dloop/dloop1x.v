@@ -67,7 +67,8 @@ module dloop1x #(
   reg pul_q;   // o_pulse
   reg og_q;    // o_g
   reg ox_q;    // o_cross
-  reg a_q;     // the move is an arc
+  reg a_q;     // the move is an arc (n2's counter); a copy for a1's:
+  reg ap_q;    // (the counters' chains are far apart; reset, so that yosys does not merge the two)
 
   // Selects: g, the choice of the step now (D >= 0), in copies that each
   // compute their own next value (so that yosys does not merge them):
@@ -148,10 +149,12 @@ module dloop1x #(
   // ---- control
   always @(posedge i_clk) begin
     if (i_rst) begin
+      ap_q <= 1'b0;
       rdy_q <= 1'b0;
       pul_q <= 1'b0;
       fst_q <= 1'b0;
     end else begin
+      if (i_load) ap_q <= i_arc;
       if (i_load) rdy_q <= 1'b1;
       pul_q <= step;
       if (en) fst_q <= i_load;
@@ -219,12 +222,14 @@ module dloop1x #(
   // n2's other sources (arming: ~r; outward while armed: ~ADD), chosen by
   // registers, so that one LUT follows the counter's chain.
   wire n2_alt = gm_q ? i2_q : i1_q;
-  wire [N-1:0] n2_src = i_load ? ~i_s2 : gm_q ? ~r_q : ~at_q;
+  // Kept nets: abc would otherwise put two LUTs behind the counter's chain.
+  (* keep *) wire n2_sel = i_load | n2_alt;
+  (* keep *) wire [N-1:0] n2_src = i_load ? ~i_s2 : gm_q ? ~r_q : ~at_q;
   wire n2_srcf = i_load ? (i_s2[LW-1:1] == {(LW - 1) {1'b0}}) & i_arc
                : gm_q ? (r_q[LW-1:1] == {(LW - 1) {1'b0}}) : (at_q[LW-1:1] == {(LW - 1) {1'b0}});
   always @(posedge i_clk) begin
     if (en_n2) begin
-      if (i_load | n2_alt) begin
+      if (n2_sel) begin
         n2_q <= n2_src;
         f2_q <= n2_srcf;
       end else begin
@@ -263,9 +268,9 @@ module dloop1x #(
         a3_q <= i_a0 == {{(N - 2) {1'b0}}, 2'b11};
         a5_q <= i_a0 == {{(N - 3) {1'b0}}, 3'b101};
       end else begin
-        a1_q[LW-1:0] <= a1_q[LW-1:0] + {{(LW - 2) {1'b0}}, a_q, 1'b0};
+        a1_q[LW-1:0] <= a1_q[LW-1:0] + {{(LW - 2) {1'b0}}, ap_q, 1'b0};
         a1_q[N-1:LW] <= a1_q[N-1:LW] + {{(HW - 1) {1'b0}}, f1_q};
-        f1_q <= a_q & (a1_q[LW-1:1] == {{(LW - 2) {1'b1}}, 1'b0});
+        f1_q <= ap_q & (a1_q[LW-1:1] == {{(LW - 2) {1'b1}}, 1'b0});
         at_q <= a1_q;
         a3_q <= a1_q == {{(N - 2) {1'b0}}, 2'b11};
         a5_q <= a1_q == {{(N - 3) {1'b0}}, 3'b101};
