@@ -6,7 +6,8 @@
 #   2. The layers: nothing under model/ or sw8085/ includes a header of
 #      rtl/ or tb/, or a Verilated model (V*.h, verilated*.h).
 #   3. One file list per core: every .v of rtl/<core>/ (but formal/) is
-#      named by exactly one rtl/*/*.f, and every name there exists.
+#      named by exactly one rtl/*/*.f (prototypes: rtl/proto/*/*.f), and
+#      every name there exists.
 #   4. One harness base: only tb/common/harness.hpp makes a VerilatedContext.
 cmake_minimum_required(VERSION 3.25)
 if(NOT ROOT)
@@ -45,7 +46,7 @@ foreach(f IN LISTS lower)
 endforeach()
 
 # 3
-file(GLOB lists RELATIVE ${ROOT}/rtl ${ROOT}/rtl/*/*.f)
+file(GLOB lists RELATIVE ${ROOT}/rtl ${ROOT}/rtl/*/*.f ${ROOT}/rtl/proto/*/*.f)
 set(listed "")
 foreach(l IN LISTS lists)
   file(STRINGS ${ROOT}/rtl/${l} lines)

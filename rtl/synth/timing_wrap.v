@@ -13,10 +13,39 @@
 //                     analysis design core_free of designs.mk)
 //   DESIGN_DP         the datapath interp_dp alone
 //   DESIGN_INTERP3    the 3-axis core interp3_core, state outputs included
+//   DESIGN_DLOOP      the step loop prototype rtl/proto/dloop (docs/rtl-proto.md)
+//   DESIGN_DLOOP_NOD  the same without its D output (trimmed, as a core's
+//                     state outputs are): the loop's own cost
+//   DESIGN_DLOOP1, DESIGN_DLOOP1_NOD  the same for dloop1 (one step ahead)
+//   DESIGN_DLOOP1L, DESIGN_DLOOP1L_NOD  the same for dloop1l (one-clock load)
+//   DESIGN_DLOOP1X, DESIGN_DLOOP1X_NOD  the same for dloop1x (and crossings)
 //   DESIGN_CPU8085    the 8085 CPU: bus, interrupt pins, retire strobe
 //   DESIGN_BOARD8085  the whole board8085, ROM from ROM_FILE
 // Each design sets NI (inputs, reset on top) and NO (outputs).
 `default_nettype none
+
+`ifdef DESIGN_DLOOP_NOD
+`define DESIGN_DLOOP
+`define DLOOP_NO_D
+`endif
+`ifdef DESIGN_DLOOP1_NOD
+`define DESIGN_DLOOP1
+`define DLOOP_NO_D
+`endif
+`ifdef DESIGN_DLOOP1L_NOD
+`define DESIGN_DLOOP1L
+`define DLOOP_NO_D
+`endif
+`ifdef DESIGN_DLOOP1X_NOD
+`define DESIGN_DLOOP1X
+`define DLOOP_NO_D
+`endif
+`ifdef DESIGN_DLOOP1
+`define DESIGN_DLOOP
+`define DLOOP_MODULE dloop1
+`elsif DESIGN_DLOOP
+`define DLOOP_MODULE dloop
+`endif
 
 module timing_wrap (
     input  wire i_clk_pin,
@@ -50,6 +79,30 @@ module timing_wrap (
   localparam integer W = 24;
   localparam integer NI = 3 * W + 6;  // ends, signs, load, cmd, reset
   localparam integer NO = 8 + 3 * W + 3 * (W + 2);  // the state, then o_ready
+`elsif DESIGN_DLOOP
+  localparam integer W = 24;
+  localparam integer NI = 2 * (W + 1) + 4;  // load, cmd, arc, SUB, ADD, reset
+`ifdef DLOOP_NO_D
+  localparam integer NO = 3;                // ready, pulse, g
+`else
+  localparam integer NO = 3 + W + 2;        // ready, pulse, g, D
+`endif
+`elsif DESIGN_DLOOP1L
+  localparam integer W = 24;
+  localparam integer NI = 5 * (W + 2) + 4;  // load, cmd, arc, the block, reset
+`ifdef DLOOP_NO_D
+  localparam integer NO = 3;                // ready, pulse, g
+`else
+  localparam integer NO = 3 + W + 2;        // ready, pulse, g, D
+`endif
+`elsif DESIGN_DLOOP1X
+  localparam integer W = 24;
+  localparam integer NI = 6 * (W + 2) + 4;  // load, cmd, arc, the block, reset
+`ifdef DLOOP_NO_D
+  localparam integer NO = 4;                // ready, pulse, g, cross
+`else
+  localparam integer NO = 4 + W + 2;        // ready, pulse, g, cross, D
+`endif
 `elsif DESIGN_CPU8085
   localparam integer NI = 15;
   localparam integer NO = 38;
@@ -63,7 +116,7 @@ module timing_wrap (
   localparam integer NI = 0;
   localparam integer NO = 0;
   initial begin
-    $display("timing_wrap: define one of DESIGN_TOP, DESIGN_CORE, DESIGN_DP, DESIGN_INTERP3, DESIGN_CPU8085, DESIGN_BOARD8085");
+    $display("timing_wrap: define one of DESIGN_TOP, DESIGN_CORE, DESIGN_DP, DESIGN_INTERP3, DESIGN_DLOOP, DESIGN_CPU8085, DESIGN_BOARD8085");
     $finish;
   end
 `endif
@@ -151,6 +204,42 @@ module timing_wrap (
       .o_x(outs[7 +: W]), .o_y(outs[7 + W +: W]), .o_z(outs[7 + 2 * W +: W]),
       .o_exy(outs[7 + 3 * W +: W + 2]), .o_exz(outs[9 + 4 * W +: W + 2]),
       .o_eyz(outs[11 + 5 * W +: W + 2]), .o_ready(outs[13 + 6 * W])
+  );
+`elsif DESIGN_DLOOP
+  `DLOOP_MODULE #(.W(W)) u_dut (
+      .i_clk(i_clk), .i_rst(rst),
+      .i_load(in_q[0]), .i_cmd(in_q[1]), .i_arc(in_q[2]),
+      .i_sub(in_q[3 +: W + 1]), .i_add(in_q[4 + W +: W + 1]),
+`ifdef DLOOP_NO_D
+      .o_ready(outs[0]), .o_pulse(outs[1]), .o_g(outs[2]), .o_d()
+`else
+      .o_ready(outs[0]), .o_pulse(outs[1]), .o_g(outs[2]), .o_d(outs[3 +: W + 2])
+`endif
+  );
+`elsif DESIGN_DLOOP1L
+  dloop1l #(.W(W)) u_dut (
+      .i_clk(i_clk), .i_rst(rst),
+      .i_load(in_q[0]), .i_cmd(in_q[1]), .i_arc(in_q[2]),
+      .i_s2(in_q[3 +: W + 2]), .i_a0(in_q[5 + W +: W + 2]),
+      .i_f1(in_q[7 + 2 * W +: W + 2]), .i_f2(in_q[9 + 3 * W +: W + 2]), .i_f3(in_q[11 + 4 * W +: W + 2]),
+`ifdef DLOOP_NO_D
+      .o_ready(outs[0]), .o_pulse(outs[1]), .o_g(outs[2]), .o_d()
+`else
+      .o_ready(outs[0]), .o_pulse(outs[1]), .o_g(outs[2]), .o_d(outs[3 +: W + 2])
+`endif
+  );
+`elsif DESIGN_DLOOP1X
+  dloop1x #(.W(W)) u_dut (
+      .i_clk(i_clk), .i_rst(rst),
+      .i_load(in_q[0]), .i_cmd(in_q[1]), .i_arc(in_q[2]),
+      .i_s2(in_q[3 +: W + 2]), .i_a0(in_q[5 + W +: W + 2]), .i_r(in_q[7 + 2 * W +: W + 2]),
+      .i_f1(in_q[9 + 3 * W +: W + 2]), .i_f2(in_q[11 + 4 * W +: W + 2]), .i_f3(in_q[13 + 5 * W +: W + 2]),
+      .o_ready(outs[0]), .o_pulse(outs[1]), .o_g(outs[2]), .o_cross(outs[3]),
+`ifdef DLOOP_NO_D
+      .o_d()
+`else
+      .o_d(outs[4 +: W + 2])
+`endif
   );
 `elsif DESIGN_CPU8085
   cpu8085 u_dut (
