@@ -7,11 +7,6 @@
 #   top_*:       interp_top, the whole Wishbone peripheral
 #   dp_*:        the datapath interp_dp alone
 #   interp3_*:   the 3-axis core (figures: docs/rtl-3axis.md)
-#   dloop_*:     the step loop prototype rtl/proto/dloop (docs/rtl-proto.md);
-#                dloop_nod_* without its D output (the loop's own cost);
-#                dloop1_*, dloop1_nod_*: the same one step ahead (dloop1.v);
-#                dloop1l_*, dloop1l_nod_*: dloop1 with a one-clock load (dloop1l.v);
-#                dloop1x_*, dloop1x_nod_*: dloop1l with crossings (dloop1x.v)
 #   cpu8085_*:   the 8085 CPU alone (figures: docs/cpu8085.md)
 #   board8085_*: the board, ROM = the board test program's image
 #
@@ -30,20 +25,14 @@ endef
 $(foreach dev,hx8k up5k,$(foreach d,CORE TOP DP,\
   $(eval $(call design,$(shell echo $(d) | tr A-Z a-z)_$(dev),interp/interp.f,$(d),$(dev),--no-promote-globals))))
 $(eval $(call design,interp3_hx8k,interp3/interp3.f,INTERP3,hx8k,--no-promote-globals))
-$(eval $(call design,dloop_hx8k,proto/dloop/dloop.f,DLOOP,hx8k,--no-promote-globals))
-$(eval $(call design,dloop_nod_hx8k,proto/dloop/dloop.f,DLOOP_NOD,hx8k,--no-promote-globals))
-$(eval $(call design,dloop1_hx8k,proto/dloop/dloop.f,DLOOP1,hx8k,--no-promote-globals))
-$(eval $(call design,dloop1_nod_hx8k,proto/dloop/dloop.f,DLOOP1_NOD,hx8k,--no-promote-globals))
-$(eval $(call design,dloop1l_hx8k,proto/dloop/dloop.f,DLOOP1L,hx8k,--no-promote-globals))
-$(eval $(call design,dloop1l_nod_hx8k,proto/dloop/dloop.f,DLOOP1L_NOD,hx8k,--no-promote-globals))
-$(eval $(call design,dloop1x_hx8k,proto/dloop/dloop.f,DLOOP1X,hx8k,--no-promote-globals))
-$(eval $(call design,dloop1x_nod_hx8k,proto/dloop/dloop.f,DLOOP1X_NOD,hx8k,--no-promote-globals))
 $(foreach dev,hx8k up5k,$(eval $(call design,cpu8085_$(dev),cpu8085/cpu8085.f,CPU8085,$(dev),)))
 $(foreach dev,hx8k up5k,$(eval $(call design,board8085_$(dev),board8085/board8085.f,BOARD8085,$(dev),)))
 
 # Analysis designs: not in `make synth`, built by
-#   make -C rtl/synth BUILD=$PWD/build/synth-analysis analysis
-# to tell which part of `core` holds its Fmax (docs/rtl.md, "What limits it"):
+#   make -C rtl/synth BUILD=$PWD/build/synth-analysis analysis     (all)
+#   make -C rtl/synth BUILD=$PWD/build/synth-analysis $PWD/build/synth-analysis/parts/<name>.json
+# to tell which part of `core` holds its Fmax (docs/rtl.md, "What limits it"),
+# and the timing prototypes of rtl/proto (docs/rtl-proto.md):
 #   core_free_hx8k: core with its command tied high (the datapath free-running,
 #                   the command no longer a late input of the step decision);
 #   core_nodp_hx8k: core with interp_dp replaced by dp_stub.v (timing only).
@@ -58,6 +47,14 @@ endef
 INTERP_SRCS := $(shell $(RTL)/filelist $(RTL)/interp/interp.f)
 $(eval $(call analysis_design,core_free_hx8k,interp/interp.f,$(INTERP_SRCS),-DDESIGN_CORE -DCMD_HIGH))
 $(eval $(call analysis_design,core_nodp_hx8k,interp/interp.f,$(filter-out %/interp_dp.v,$(INTERP_SRCS)) dp_stub.v,-DDESIGN_CORE))
+#   dloop_*:     the step loop prototype rtl/proto/dloop (docs/rtl-proto.md);
+#                dloop_nod_* without its D output (the loop's own cost);
+#                dloop1_*, dloop1_nod_*: the same one step ahead (dloop1.v);
+#                dloop1l_*, dloop1l_nod_*: dloop1 with a one-clock load (dloop1l.v);
+#                dloop1x_*, dloop1x_nod_*: dloop1l with crossings (dloop1x.v)
+DLOOP_SRCS := $(shell $(RTL)/filelist $(RTL)/proto/dloop/dloop.f)
+$(foreach d,DLOOP DLOOP_NOD DLOOP1 DLOOP1_NOD DLOOP1L DLOOP1L_NOD DLOOP1X DLOOP1X_NOD,\
+  $(eval $(call analysis_design,$(shell echo $(d) | tr A-Z a-z)_hx8k,proto/dloop/dloop.f,$(DLOOP_SRCS),-DDESIGN_$(d))))
 
 # The board with the host link: its iCEBreaker bitstream (icebreaker/link.mk).
 include icebreaker/link.mk
