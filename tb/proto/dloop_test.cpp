@@ -45,12 +45,14 @@ std::uint64_t seed() {
   return e ? std::strtoull(e, nullptr, 10) : 1982;
 }
 
+// What every prototype's harness has: no load and no command after the
+// reset, and D read back sign-extended.
 template <class V>
-class Dloop : public contour::tb::Harness<V> {
+class ProtoHarness : public contour::tb::Harness<V> {
  public:
   using contour::tb::Harness<V>::top;
   using contour::tb::Harness<V>::tick;
-  Dloop() {
+  ProtoHarness() {
     top().i_load = 0;
     top().i_cmd = 0;
     this->hold_reset(1);
@@ -62,6 +64,14 @@ class Dloop : public contour::tb::Harness<V> {
     if (v & (std::int64_t{1} << (kN - 1))) v -= std::int64_t{1} << kN;
     return v;
   }
+};
+
+template <class V>
+class Dloop : public ProtoHarness<V> {
+ public:
+  using ProtoHarness<V>::top;
+  using ProtoHarness<V>::tick;
+  using ProtoHarness<V>::d;
 
   // Load; returns "" or what went wrong (not ready, D != 0).
   std::string load(bool arc, std::uint64_t sub, std::uint64_t add) {
@@ -244,20 +254,11 @@ TEST(Dloop, OneStepAheadMatchesTheClosedForms) { check_all<Vdloop1>("dloop1"); }
 // dloop1l, dloop1x: the block as a block preparation would give it; loads
 // in one clock, which may be the clock of a step.
 template <class V>
-class OneClockLoad : public contour::tb::Harness<V> {
+class OneClockLoad : public ProtoHarness<V> {
  public:
-  using contour::tb::Harness<V>::top;
-  using contour::tb::Harness<V>::tick;
-  OneClockLoad() {
-    top().i_load = 0;
-    top().i_cmd = 0;
-    this->hold_reset(1);
-  }
-  std::int64_t d() const {
-    std::int64_t v = static_cast<std::int64_t>(top().o_d);
-    if (v & (std::int64_t{1} << (kN - 1))) v -= std::int64_t{1} << kN;
-    return v;
-  }
+  using ProtoHarness<V>::top;
+  using ProtoHarness<V>::tick;
+  using ProtoHarness<V>::d;
   // The block's fields on the inputs (D's, -SUB, kept until the first step).
   void block(bool arc, std::int64_t sub, std::int64_t add) {
     const std::int64_t a = arc ? 1 : 0;
