@@ -5,6 +5,7 @@
 #   make build   configure and build everything; the CLI is build/contour
 #   make bench   speed figures (Google Benchmark, callgrind; paper B: model/planner/bench_gcode.sh)
 #   make synth   yosys + nextpnr-ice40: LCs, BRAMs, Fmax over seeds 1-5 (SEEDS=...) on HX8K and UP5K
+#   make synth-analysis  the same for the analysis designs (what holds core's Fmax; rtl/proto's prototypes)
 #   make lint    verilator --lint-only -Wall over rtl/ (every core's file list)
 #   make formal  the formal proofs and their mutants (ctest -L formal)
 #   make mutants planted bugs in model, RTL, 8085 program, board and host: each must be KILLED
@@ -25,7 +26,7 @@ CMAKE   ?= cmake
 CTEST_ARGS ?=
 COV_FILTER ?= *
 
-.PHONY: all deps configure build run test bench synth lint formal clean help
+.PHONY: all deps configure build run test bench synth synth-analysis lint formal clean help
 
 all: build
 
@@ -74,6 +75,9 @@ bench: build
 
 synth: deps
 	@$(MAKE) --no-print-directory -C rtl/synth BUILD=$(abspath $(BUILD))/synth
+
+synth-analysis: deps
+	@$(MAKE) --no-print-directory -C rtl/synth BUILD=$(abspath $(BUILD))/synth-analysis analysis
 
 lint: deps
 	@$(MAKE) --no-print-directory -C rtl lint
