@@ -35,18 +35,21 @@ $(foreach dev,hx8k up5k,$(eval $(call design,board8085_$(dev),board8085/board808
 # and the timing prototypes of rtl/proto (docs/rtl-proto.md):
 #   core_free_hx8k: core with its command tied high (the datapath free-running,
 #                   the command no longer a late input of the step decision);
-#   core_nodp_hx8k: core with interp_dp replaced by dp_stub.v (timing only).
+#   core_nodp_hx8k: core with interp_dp replaced by dp_stub.v (timing only:
+#                   yosys reads both, drops interp_dp and renames dp_stub).
+# $(5): yosys commands between reading the sources and synth_ice40.
 define analysis_design
 ANALYSIS += $(1)
 $(1)_SRCS := timing_wrap.v $(3)
 $(1)_INC := $(shell $(RTL)/filelist --incdirs $(RTL)/$(2))
 $(1)_DEFS := $(4)
+$(1)_YS := $(5)
 $(1)_DEV := hx8k
 $(1)_PNR := --no-promote-globals
 endef
 INTERP_SRCS := $(shell $(RTL)/filelist $(RTL)/interp/interp.f)
 $(eval $(call analysis_design,core_free_hx8k,interp/interp.f,$(INTERP_SRCS),-DDESIGN_CORE -DCMD_HIGH))
-$(eval $(call analysis_design,core_nodp_hx8k,interp/interp.f,$(filter-out %/interp_dp.v,$(INTERP_SRCS)) dp_stub.v,-DDESIGN_CORE))
+$(eval $(call analysis_design,core_nodp_hx8k,interp/interp.f,$(INTERP_SRCS) dp_stub.v,-DDESIGN_CORE,delete interp_dp; rename dp_stub interp_dp;))
 #   dloop_*:     the step loop prototype rtl/proto/dloop (docs/rtl-proto.md);
 #                dloop_nod_* without its D output (the loop's own cost);
 #                dloop1_*, dloop1_nod_*: the same one step ahead (dloop1.v);

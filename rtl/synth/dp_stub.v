@@ -1,14 +1,15 @@
 // dp_stub: a stand-in for interp_dp in the analysis design core_nodp
-// (rtl/synth/designs.mk), for timing only: it measures what the rest of
+// (rtl/synth/designs.mk: yosys drops interp_dp and gives this module its
+// name), for timing only: it measures what the rest of
 // `core` (block preparation, queue, output stage, the wrapper) makes when
 // the datapath costs nothing. NOT an interpolator: it loads the prepared
 // block into a register that rotates by one bit per clock (every bit of
 // the block stays live, so yosys keeps the queue whole), takes a block in
 // every other clock of the command, and shows bits of that register as
-// its pulse and busy outputs. Same ports as interp_dp.
+// its pulse and busy outputs. Same ports and parameter as interp_dp.
 `default_nettype none
 
-module interp_dp #(
+module dp_stub #(
     parameter integer W = 24  // coordinate magnitude width, as interp_dp's
 ) (
     input  wire           i_clk,

@@ -8,4 +8,4 @@ $(eval $(call lint_run,timing_wrap_CPU8085,timing_wrap,cpu8085/cpu8085.f,synth/t
 $(eval $(call lint_run,timing_wrap_BOARD8085,timing_wrap,board8085/board8085.f,synth/timing_wrap.v -DDESIGN_BOARD8085))
 $(eval $(call lint_run,icebreaker_top,icebreaker_top,interp/interp.f,synth/icebreaker/icebreaker_top.v))
 # The datapath's timing stub of the analysis design core_nodp (designs.mk).
-$(eval $(call lint_run,dp_stub,interp_dp,synth/dp_stub.f,))
+$(eval $(call lint_run,dp_stub,dp_stub,synth/dp_stub.f,))

@@ -124,21 +124,16 @@ std::string where(const Outcome& r, const char* what, std::int64_t x, std::int64
   return s.str();
 }
 
-// The arc from (x0, y0), Q1 CCW: SUB = 2 x0 - 1, ADD = 2 y0 + 1.
-template <class H>
-Outcome arc(H& h, std::mt19937_64& rng, std::int64_t x0, std::int64_t y0, std::uint64_t max_steps) {
-  Outcome r;
-  r.name = "arc from (" + std::to_string(x0) + ", " + std::to_string(y0) + ")";
-  r.error = h.load(true, static_cast<std::uint64_t>(2 * x0 - 1), static_cast<std::uint64_t>(2 * y0 + 1));
-  if (!r.error.empty()) {
-    r.error = r.name + ": " + r.error;
-    return r;
-  }
-  const std::int64_t r2 = x0 * x0 + y0 * y0;
-  std::int64_t x = x0, y = y0;
+// Steps from (x, y) after a load: before each step, stop when `stop(x, y,
+// D)` holds; the choice must be D >= 0 (the closed form `d(x, y)`), an
+// inward step (choice 1) applies `in` to (x, y), an outward one `out`, and
+// the prototype's D after the step must be d(x, y) again.
+template <class H, class D, class Stop, class In, class Out>
+Outcome walk(H& h, std::mt19937_64& rng, Outcome r, std::int64_t x, std::int64_t y, std::uint64_t max_steps, D d,
+             Stop stop, In in, Out out) {
   while (r.steps < max_steps) {
-    const std::int64_t dbefore = x * x + y * y - r2;
-    if (x == 1 && dbefore >= 0) break;  // the next step would reach the axis
+    const std::int64_t dbefore = d(x, y);
+    if (stop(x, dbefore)) break;
     const int g = h.step(rng() % 4 == 0 ? static_cast<unsigned>(rng() % 3) : 0u);
     ++r.steps;
     if (g < 0) {
@@ -149,8 +144,8 @@ Outcome arc(H& h, std::mt19937_64& rng, std::int64_t x0, std::int64_t y0, std::u
       r.error = where(r, "choice", x, y, g, dbefore >= 0);
       return r;
     }
-    if (g) --x; else ++y;
-    const std::int64_t want = x * x + y * y - r2;
+    if (g) in(x, y); else out(x, y);
+    const std::int64_t want = d(x, y);
     if (h.d() != want) {
       r.error = where(r, "D", x, y, h.d(), want);
       return r;
@@ -159,37 +154,41 @@ Outcome arc(H& h, std::mt19937_64& rng, std::int64_t x0, std::int64_t y0, std::u
   return r;
 }
 
-// The line with constants A (outward), B (inward) from the origin.
+// Loads a block; an Outcome named `name`, with the load's error if any.
+template <class H>
+Outcome loaded(H& h, std::string name, bool arc, std::int64_t sub, std::int64_t add) {
+  Outcome r;
+  r.name = std::move(name);
+  const std::string e = h.load(arc, static_cast<std::uint64_t>(sub), static_cast<std::uint64_t>(add));
+  if (!e.empty()) r.error = r.name + ": " + e;
+  return r;
+}
+
+// The arc from (x0, y0), Q1 CCW: SUB = 2 x0 - 1, ADD = 2 y0 + 1; D =
+// x^2 + y^2 - R^2, inward is -X, outward +Y; up to just before x reaches 0.
+template <class H>
+Outcome arc(H& h, std::mt19937_64& rng, std::int64_t x0, std::int64_t y0, std::uint64_t max_steps) {
+  Outcome r = loaded(h, "arc from (" + std::to_string(x0) + ", " + std::to_string(y0) + ")", true, 2 * x0 - 1,
+                     2 * y0 + 1);
+  if (!r.error.empty()) return r;
+  const std::int64_t r2 = x0 * x0 + y0 * y0;
+  return walk(
+      h, rng, r, x0, y0, max_steps, [r2](std::int64_t x, std::int64_t y) { return x * x + y * y - r2; },
+      // the next step would reach the axis
+      [](std::int64_t x, std::int64_t dbefore) { return x == 1 && dbefore >= 0; },
+      [](std::int64_t& x, std::int64_t&) { --x; }, [](std::int64_t&, std::int64_t& y) { ++y; });
+}
+
+// The line with constants A (outward), B (inward) from the origin: D =
+// A y - B x, inward is +X, outward +Y.
 template <class H>
 Outcome line(H& h, std::mt19937_64& rng, std::int64_t a, std::int64_t b, std::uint64_t max_steps) {
-  Outcome r;
-  r.name = "line A = " + std::to_string(a) + ", B = " + std::to_string(b);
-  r.error = h.load(false, static_cast<std::uint64_t>(b), static_cast<std::uint64_t>(a));
-  if (!r.error.empty()) {
-    r.error = r.name + ": " + r.error;
-    return r;
-  }
-  std::int64_t x = 0, y = 0;
-  while (r.steps < max_steps) {
-    const std::int64_t dbefore = a * y - b * x;
-    const int g = h.step(rng() % 4 == 0 ? static_cast<unsigned>(rng() % 3) : 0u);
-    ++r.steps;
-    if (g < 0) {
-      r.error = where(r, "pulse/hold misbehaved, D", x, y, h.d(), dbefore);
-      return r;
-    }
-    if (g != (dbefore >= 0 ? 1 : 0)) {
-      r.error = where(r, "choice", x, y, g, dbefore >= 0);
-      return r;
-    }
-    if (g) ++x; else ++y;
-    const std::int64_t want = a * y - b * x;
-    if (h.d() != want) {
-      r.error = where(r, "D", x, y, h.d(), want);
-      return r;
-    }
-  }
-  return r;
+  Outcome r = loaded(h, "line A = " + std::to_string(a) + ", B = " + std::to_string(b), false, b, a);
+  if (!r.error.empty()) return r;
+  return walk(
+      h, rng, r, 0, 0, max_steps, [a, b](std::int64_t x, std::int64_t y) { return a * y - b * x; },
+      [](std::int64_t, std::int64_t) { return false; }, [](std::int64_t& x, std::int64_t&) { ++x; },
+      [](std::int64_t&, std::int64_t& y) { ++y; });
 }
 
 template <class V>
